@@ -1,0 +1,256 @@
+// progressive_medial_axis: the command-line tool of Progressive_medial_axis_2.
+//
+//   progressive_medial_axis [options] INPUT.wkt|INPUT.geojson
+//
+// Reads one polygon (WKT POLYGON or GeoJSON Polygon), computes its
+// region-growing progressive medial axis, and prints or writes it.  Run with
+// --help for the options.  Exit status: 0 on success, 2 on invalid input or
+// usage, 1 on any other failure.
+
+#include <CGAL/Progressive_medial_axis_2.h>
+#include <CGAL/Progressive_medial_axis_2/IO/polygon_io.h>
+#include <CGAL/Progressive_medial_axis_2/IO/medial_axis_io.h>
+#include <CGAL/Progressive_medial_axis_2/IO/medial_axis_drawing.h>
+
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <iostream>
+#include <string>
+#include <vector>
+
+namespace {
+
+const char* usage_text =
+  "usage: progressive_medial_axis [options] INPUT.wkt|INPUT.geojson\n"
+  "\n"
+  "Computes the region-growing progressive medial axis of one polygon.\n"
+  "Generator ids: e<r>.<i> is the edge from vertex i to vertex i+1 of ring r\n"
+  "(ring 0 the outer ring, ring k the k-th hole), v<r>.<i> the reflex vertex i.\n"
+  "\n"
+  "options:\n"
+  "  --pairs            print 'pair A B L' for every medial curve (A < B, L its length)\n"
+  "  --branches         print 'branch A B C ... x y r' for every branch point\n"
+  "  --step K           stop after K merges; ids then refer to the shape of that\n"
+  "                     step, as written by --shape-out\n"
+  "  --shape-out FILE   write the shape of the last step done as a WKT POLYGON\n"
+  "  --svg FILE         draw the shape and its medial axis as SVG\n"
+  "  --geojson FILE     write the medial axis (curves and branch points) as GeoJSON\n"
+  "  --wkt-out FILE     write the medial axis as a WKT MULTILINESTRING\n"
+  "  --frames N         with --frames-prefix P, draw N pictures of progressive steps,\n"
+  "                     P_000.svg ... (the last one is the final axis)\n"
+  "  --frames-prefix P  file name prefix of the progressive pictures\n"
+  "  --traits T         filtered (default: exact decisions), epick (double), exact (CORE::Expr)\n"
+  "  --stats            print the input size, step count, times and the largest n_v\n"
+  "  --help             print this text\n";
+
+struct Options {
+  bool pairs = false, branches = false, stats = false;
+  long long step = -1;
+  std::string input, shape_out, svg, geojson, wkt_out, frames_prefix, traits = "filtered";
+  int frames = 0;
+};
+
+[[noreturn]] void usage_error(const std::string& msg)
+{
+  std::cerr << "progressive_medial_axis: " << msg << "\n(see --help)\n";
+  std::exit(2);
+}
+
+Options parse(int argc, char** argv)
+{
+  Options o;
+  for(int i = 1; i < argc; ++i) {
+    std::string a = argv[i];
+    auto value = [&](const char* name) -> std::string {
+      if(i + 1 >= argc) usage_error(std::string("option ") + name + " needs a value");
+      return argv[++i];
+    };
+    if(a == "--help" || a == "-h") { std::cout << usage_text; std::exit(0); }
+    else if(a == "--pairs") o.pairs = true;
+    else if(a == "--branches") o.branches = true;
+    else if(a == "--stats") o.stats = true;
+    else if(a == "--step") {
+      std::string v = value("--step");
+      char* end = nullptr;
+      o.step = std::strtoll(v.c_str(), &end, 10);
+      if(v.empty() || *end != '\0' || o.step < 0) usage_error("--step needs a non-negative integer, got '" + v + "'");
+    }
+    else if(a == "--shape-out") o.shape_out = value("--shape-out");
+    else if(a == "--svg") o.svg = value("--svg");
+    else if(a == "--geojson") o.geojson = value("--geojson");
+    else if(a == "--wkt-out") o.wkt_out = value("--wkt-out");
+    else if(a == "--frames-prefix") o.frames_prefix = value("--frames-prefix");
+    else if(a == "--frames") {
+      std::string v = value("--frames");
+      char* end = nullptr;
+      long n = std::strtol(v.c_str(), &end, 10);
+      if(v.empty() || *end != '\0' || n < 1 || n > 10000) usage_error("--frames needs an integer from 1 to 10000, got '" + v + "'");
+      o.frames = int(n);
+    }
+    else if(a == "--traits") {
+      o.traits = value("--traits");
+      if(o.traits != "filtered" && o.traits != "epick" && o.traits != "exact")
+        usage_error("--traits must be filtered, epick or exact, got '" + o.traits + "'");
+    }
+    else if(!a.empty() && a[0] == '-') usage_error("unknown option '" + a + "'");
+    else if(o.input.empty()) o.input = a;
+    else usage_error("more than one input file ('" + o.input + "' and '" + a + "')");
+  }
+  if(o.input.empty()) usage_error("no input file");
+  if(o.frames > 0 && o.frames_prefix.empty()) usage_error("--frames needs --frames-prefix");
+  return o;
+}
+
+std::ofstream open_out(const std::string& path)
+{
+  std::ofstream f(path);
+  if(!f) {
+    std::cerr << "progressive_medial_axis: cannot write '" << path << "'\n";
+    std::exit(1);
+  }
+  return f;
+}
+
+template <class Traits>
+void print_filter_statistics(const Traits&) {}
+
+template <class CK, class EK>
+void print_filter_statistics(const CGAL::Progressive_medial_axis_filtered_traits_2<CK, EK>&)
+{
+  const auto& f = CGAL::Progressive_medial_axis_filtered_traits_2<CK, EK>::filter_statistics();
+  std::printf("filter_interval_evaluations %zu\nfilter_mpfr_evaluations %zu\nfilter_exact_evaluations %zu\n"
+              "filter_mpfr_comparisons %zu\nfilter_exact_comparisons %zu\n",
+              f.interval_evaluations, f.mpfr_evaluations, f.exact_evaluations, f.mpfr_comparisons,
+              f.exact_comparisons);
+}
+
+template <class Traits>
+int run(const Options& o)
+{
+  typedef typename Traits::Point_2 Point_2;
+  typedef CGAL::Progressive_medial_axis_2<Traits> PMA;
+  typedef typename PMA::Medial_axis Medial_axis;
+  typedef CGAL::PMA2::Generator_names<Medial_axis> Names;
+
+  auto t0 = std::chrono::steady_clock::now();
+  typename PMA::Rings rings;
+  try {
+    auto input = CGAL::PMA2::read_polygon_file<CGAL::Epick::Point_2>(o.input);
+    for(const auto& r : input) {
+      rings.emplace_back();
+      for(const auto& p : r) rings.back().push_back(Point_2(p.x(), p.y()));
+    }
+  } catch(const CGAL::PMA2::Input_error& e) {
+    std::cerr << o.input << ": " << e.what() << "\n";
+    return 2;
+  }
+  double read_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+
+  std::unique_ptr<PMA> pma;
+  try {
+    pma.reset(new PMA(rings));
+  } catch(const CGAL::PMA2::Input_error& e) {
+    std::cerr << o.input << ": " << e.what() << "\n";
+    return 2;
+  }
+
+  const std::size_t last = (o.step >= 0) ? std::min<std::size_t>(std::size_t(o.step), pma->number_of_steps())
+                                         : pma->number_of_steps();
+  // progressive pictures: frames at steps spread over the run, the last one final
+  std::vector<std::size_t> frame_steps;
+  if(o.frames > 0) {
+    for(int i = 0; i < o.frames; ++i) {
+      double f = (o.frames == 1) ? 1.0 : double(i) / double(o.frames - 1);
+      // spread on a square-root scale so that early, coarse steps are shown
+      frame_steps.push_back(std::size_t(std::llround(f * f * double(last))));
+    }
+  }
+  std::size_t next_frame = 0;
+  auto draw_frames = [&]() {
+    while(next_frame < frame_steps.size() && frame_steps[next_frame] <= pma->current_step()) {
+      char name[32];
+      std::snprintf(name, sizeof(name), "_%03zu.svg", next_frame);
+      std::ofstream f = open_out(o.frames_prefix + name);
+      CGAL::PMA2::write_svg(f, pma->medial_axis(),
+                            "step " + std::to_string(pma->current_step()) + " of " +
+                              std::to_string(pma->number_of_steps()));
+      ++next_frame;
+    }
+  };
+  draw_frames();
+  while(pma->current_step() < last) {
+    pma->refine();
+    if(!frame_steps.empty()) draw_frames();
+  }
+
+  const Medial_axis& ma = pma->medial_axis();
+  const bool shape_mode = (o.step >= 0);
+  Names names(ma, shape_mode ? Names::SHAPE : Names::INPUT);
+
+  if(!o.shape_out.empty()) {
+    std::ofstream f = open_out(o.shape_out);
+    typename Names::Mode mode = Names::SHAPE;
+    Names shape_names(ma, mode);
+    std::vector<std::vector<CGAL::Epick::Point_2> > out;
+    for(const auto& r : shape_names.rings()) {
+      out.emplace_back();
+      for(int i : r) {
+        auto p = Medial_axis::to_xy(ma.points()[i]);
+        out.back().push_back(CGAL::Epick::Point_2(p.first, p.second));
+      }
+    }
+    CGAL::PMA2::write_wkt_polygon(f, out);
+    f << "\n";
+  }
+  if(o.pairs)
+    CGAL::PMA2::write_pairs(std::cout, CGAL::PMA2::named_curves(ma, names));
+  if(o.branches)
+    CGAL::PMA2::write_branches(std::cout, CGAL::PMA2::named_branches(ma, names, 1e-12 * CGAL::PMA2::bbox_diagonal(ma)));
+  if(!o.svg.empty()) {
+    std::ofstream f = open_out(o.svg);
+    CGAL::PMA2::write_svg(f, ma, "");
+  }
+  if(!o.geojson.empty()) {
+    std::ofstream f = open_out(o.geojson);
+    CGAL::PMA2::write_geojson(f, ma, names);
+  }
+  if(!o.wkt_out.empty()) {
+    std::ofstream f = open_out(o.wkt_out);
+    CGAL::PMA2::write_wkt_axis(f, ma);
+  }
+  if(o.stats) {
+    const CGAL::Progressive_medial_axis_statistics& s = pma->statistics();
+    std::size_t nb = 0;
+    for(const auto& v : ma.vertices())
+      if(v.kind() == Medial_axis::BRANCH_POINT) ++nb;
+    std::printf("input_vertices %zu\nholes %zu\ntriangles %zu\nsteps %zu\nsteps_done %zu\n",
+                s.input_vertices, s.holes, s.triangles, pma->number_of_steps(), pma->current_step());
+    std::printf("traits %s\n", o.traits.c_str());
+    std::printf("time_read %.6f\ntime_validate %.6f\ntime_triangulate %.6f\ntime_merge %.6f\n",
+                read_seconds, s.validation_seconds, s.triangulation_seconds, s.merge_seconds);
+    std::printf("switch_events %zu\nvanishing_events %zu\nanomalies %zu\nmax_n_v %zu\n",
+                s.switches, s.vanishings, s.anomalies, s.max_queue);
+    std::printf("medial_curves %zu\nbranch_vertices %zu\n", ma.number_of_edges(), nb);
+    print_filter_statistics(pma->traits());
+  }
+  return 0;
+}
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+  Options o = parse(argc, argv);
+  try {
+    if(o.traits == "epick")
+      return run<CGAL::Progressive_medial_axis_traits_2<CGAL::Epick> >(o);
+    if(o.traits == "exact")
+      return run<CGAL::Progressive_medial_axis_traits_2<CGAL::Simple_cartesian<CORE::Expr> > >(o);
+    return run<CGAL::Progressive_medial_axis_filtered_traits_2<> >(o);
+  } catch(const std::exception& e) {
+    std::cerr << "progressive_medial_axis: " << e.what() << "\n";
+    return 1;
+  }
+}

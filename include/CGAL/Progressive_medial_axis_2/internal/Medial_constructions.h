@@ -1,0 +1,425 @@
+// Copyright (c) 2026 The Progressive_medial_axis_2 authors.
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+//
+// Numeric core of the package: the disk tangent to three generators (point
+// and segment sites), written once for any number type with a square root
+// (double, CGAL::Interval_nt, CORE::Expr).  The traits models call these
+// functions; the engine never does.
+
+#ifndef CGAL_PROGRESSIVE_MEDIAL_AXIS_2_INTERNAL_MEDIAL_CONSTRUCTIONS_H
+#define CGAL_PROGRESSIVE_MEDIAL_AXIS_2_INTERNAL_MEDIAL_CONSTRUCTIONS_H
+
+#include <CGAL/number_utils.h>
+#include <CGAL/Uncertain.h>
+
+namespace CGAL {
+namespace PMA2 {
+namespace internal {
+
+/// A generator in number type `NT`: a point `(ax, ay)`, or the open segment
+/// from `(ax, ay)` to `(bx, by)` whose interior side (the shape) is on its left.
+template <class NT>
+struct Site_nt {
+  bool is_point;
+  NT ax, ay, bx, by;
+  // the segment is vertical or horizontal (decided on the input coordinates)
+  bool axis_parallel = false;
+};
+
+// Square root and absolute value found by argument-dependent lookup, so
+// that number types outside CGAL's algebraic traits work as well.
+template <class NT>
+NT nt_sqrt(const NT& x)
+{
+  using CGAL::sqrt;
+  return sqrt(x);
+}
+
+/// Square root of a number known to be non-negative; an exact zero gives 0
+/// without a square root (exact number types would otherwise build a root
+/// of zero).
+template <class NT>
+NT nt_sqrt_nonnegative(const NT& x)
+{
+  if(CGAL::certainly(x == 0))
+    return NT(0);
+  return nt_sqrt(x);
+}
+
+template <class NT>
+NT nt_abs(const NT& x)
+{
+  using CGAL::abs;
+  return abs(x);
+}
+
+/// Exact symbolic relations between the sites of a triple, decided by the
+/// caller with exact predicates on the input coordinates.  Indices are
+/// positions 0, 1, 2 in the triple.
+struct Triple_relations {
+  // point i equals the source (resp. target) of segment j
+  bool point_is_source[3][3] = {};
+  bool point_is_target[3][3] = {};
+  // segments i and j lie on one line, and the target of i is the source of j
+  // (a flat vertex of angle pi joins them)
+  bool flat_join[3][3] = {};
+  // sites i and j are the same generator
+  bool same[3][3] = {};
+  // exact sign of the orientation of three point sites (PPP only)
+  int ppp_orientation = 0;
+};
+
+/// A circle: centre and radius.
+template <class NT>
+struct Circle_nt {
+  NT x, y, r;
+};
+
+template <class NT>
+struct Line_nt {
+  // unit normal pointing to the interior side, and offset: n.x = k on the line
+  NT nx, ny, k;
+};
+
+template <class NT>
+Line_nt<NT> oriented_line(const Site_nt<NT>& s)
+{
+  NT dx = s.bx - s.ax, dy = s.by - s.ay;
+  // axis-parallel segments need no square root (this keeps exact
+  // computations on rectilinear shapes rational)
+  NT len = s.axis_parallel ? nt_abs(dx) + nt_abs(dy) : nt_sqrt(dx * dx + dy * dy);
+  Line_nt<NT> l;
+  l.nx = -dy / len;
+  l.ny = dx / len;
+  l.k = l.nx * s.ax + l.ny * s.ay;
+  return l;
+}
+
+/// Signed distance of `(x, y)` to the line, positive on the interior side.
+template <class NT>
+NT signed_distance(const Line_nt<NT>& l, const NT& x, const NT& y)
+{
+  return l.nx * x + l.ny * y - l.k;
+}
+
+template <class NT>
+NT cross2(const NT& ax, const NT& ay, const NT& bx, const NT& by)
+{
+  return ax * by - ay * bx;
+}
+
+/// Strict counter-clockwise cyclic order of three directions: at least two
+/// of the three consecutive cross products are positive.
+template <class NT>
+bool ccw_directions(const NT& ux, const NT& uy, const NT& vx, const NT& vy,
+                    const NT& wx, const NT& wy)
+{
+  int positive = 0;
+  if(cross2(ux, uy, vx, vy) > 0) ++positive;
+  if(cross2(vx, vy, wx, wy) > 0) ++positive;
+  if(cross2(wx, wy, ux, uy) > 0) ++positive;
+  return positive >= 2;
+}
+
+/// Circle centred on the normal of `l` at `(zx, zy)` (tangent to the line
+/// there) and tangent to the line `m` on its interior side.
+template <class NT>
+bool tangent_at_point_and_line(const NT& zx, const NT& zy, const Line_nt<NT>& l,
+                               const Line_nt<NT>& m, Circle_nt<NT>& c)
+{
+  // 1 - cos(angle) of the two unit normals, without cancellation
+  NT ex = l.nx - m.nx, ey = l.ny - m.ny;
+  NT denom = (ex * ex + ey * ey) / NT(2);
+  if(!(denom > 0))
+    return false;
+  NT lambda = signed_distance(m, zx, zy) / denom;
+  if(!(lambda > 0))
+    return false;
+  c.x = zx + lambda * l.nx;
+  c.y = zy + lambda * l.ny;
+  c.r = lambda;
+  return true;
+}
+
+/// Circle centred on the normal of `l` at `(zx, zy)` and through the point `(px, py)`.
+template <class NT>
+bool tangent_at_point_and_point(const NT& zx, const NT& zy, const Line_nt<NT>& l,
+                                const NT& px, const NT& py, Circle_nt<NT>& c)
+{
+  NT vx = px - zx, vy = py - zy;
+  NT denom = NT(2) * (l.nx * vx + l.ny * vy);
+  if(!(denom > 0))
+    return false;
+  NT lambda = (vx * vx + vy * vy) / denom;
+  c.x = zx + lambda * l.nx;
+  c.y = zy + lambda * l.ny;
+  c.r = lambda;
+  return true;
+}
+
+/// PPP: the circle through three points in counter-clockwise order.
+template <class NT>
+bool circle_ppp(const Site_nt<NT>& p, const Site_nt<NT>& q, const Site_nt<NT>& s,
+                Circle_nt<NT>& c)
+{
+  NT bx = q.ax - p.ax, by = q.ay - p.ay;
+  NT cx = s.ax - p.ax, cy = s.ay - p.ay;
+  NT d = NT(2) * cross2(bx, by, cx, cy);
+  NT b2 = bx * bx + by * by, c2 = cx * cx + cy * cy;
+  NT ux = (cy * b2 - by * c2) / d;
+  NT uy = (bx * c2 - cx * b2) / d;
+  c.x = p.ax + ux;
+  c.y = p.ay + uy;
+  c.r = nt_sqrt(ux * ux + uy * uy);
+  return true;
+}
+
+/// PPS: the circle through p and q, tangent to segment s on its interior
+/// side, with p, q, s in counter-clockwise order around the centre.
+template <class NT>
+bool circle_pps(const Site_nt<NT>& p, const Site_nt<NT>& q, const Site_nt<NT>& s,
+                Circle_nt<NT>& c)
+{
+  Line_nt<NT> l = oriented_line(s);
+  // local frame at p
+  NT qx = q.ax - p.ax, qy = q.ay - p.ay;
+  NT e = signed_distance(l, p.ax, p.ay);      // distance of p to the line
+  NT mx = qx / NT(2), my = qy / NT(2);
+  NT wx = -qy, wy = qx;                        // perpendicular to pq
+  NT h = l.nx * mx + l.ny * my + e;            // distance of the midpoint
+  NT sp = l.nx * wx + l.ny * wy;
+  NT a2 = (qx * qx + qy * qy) / NT(4);
+  NT nq = l.nx * qx + l.ny * qy;
+  NT M = nq * nq;
+  NT hs = h * sp;
+  NT D = hs * hs + M * (h * h - a2);
+  if(D < 0)
+    return false;
+  NT sd = nt_sqrt_nonnegative(D);
+  NT lambda;
+  if(hs >= 0) {
+    if(!(M > 0))
+      return false;
+    lambda = (hs + sd) / M;
+  } else {
+    lambda = (a2 - h * h) / (hs - sd);
+  }
+  NT r = h + lambda * sp;
+  if(!(r > 0))
+    return false;
+  c.x = p.ax + mx + lambda * wx;
+  c.y = p.ay + my + lambda * wy;
+  c.r = r;
+  return true;
+}
+
+/// PSS: the circle through p tangent to segments s1 and s2 on their
+/// interior sides, with p, s1, s2 in counter-clockwise order.
+template <class NT>
+bool circle_pss(const Site_nt<NT>& p, const Site_nt<NT>& s1, const Site_nt<NT>& s2,
+                Circle_nt<NT>& c)
+{
+  Line_nt<NT> l1 = oriented_line(s1), l2 = oriented_line(s2);
+  NT e1 = signed_distance(l1, p.ax, p.ay);
+  NT e2 = signed_distance(l2, p.ax, p.ay);
+  NT gx = l1.nx - l2.nx, gy = l1.ny - l2.ny;
+  NT g2 = gx * gx + gy * gy;
+  if(!(g2 > 0))
+    return false;                               // parallel, same side
+  // centre x (relative to p) on the bisector g.x = e2 - e1
+  NT x0x = (e2 - e1) * gx / g2, x0y = (e2 - e1) * gy / g2;
+  NT ux = -gy, uy = gx;
+  NT R0 = l1.nx * x0x + l1.ny * x0y + e1;
+  NT rho = l1.nx * ux + l1.ny * uy;
+  NT one_minus_cos = g2 / NT(2);        // for unit normals, without cancellation
+  NT A = one_minus_cos * one_minus_cos;
+  NT B = R0 * rho;
+  NT C = x0x * x0x + x0y * x0y - R0 * R0;
+  NT disc = B * B - A * C;
+  if(disc < 0)
+    return false;
+  NT sd = nt_sqrt_nonnegative(disc);
+  NT q = (B >= 0) ? B + sd : B - sd;
+  bool found = false;
+  NT best_r(0);
+  for(int i = 0; i < 2; ++i) {
+    NT lambda;
+    if(i == 0) {
+      if(!(A > 0)) continue;
+      lambda = q / A;
+    } else {
+      if(q == 0) continue;
+      lambda = C / q;
+    }
+    NT xx = x0x + lambda * ux, xy = x0y + lambda * uy;
+    NT r = R0 + lambda * rho;
+    if(!(r > 0)) continue;
+    if(!ccw_directions(xx, xy, l1.nx, l1.ny, l2.nx, l2.ny)) continue;
+    if(!found || r < best_r) {
+      found = true;
+      best_r = r;
+      c.x = p.ax + xx;
+      c.y = p.ay + xy;
+      c.r = r;
+    }
+  }
+  return found;
+}
+
+/// SSS: the circle tangent to three segments on their interior sides, in
+/// counter-clockwise order.
+template <class NT>
+bool circle_sss(const Site_nt<NT>& s1, const Site_nt<NT>& s2, const Site_nt<NT>& s3,
+                Circle_nt<NT>& c)
+{
+  // local frame at the source of s1
+  const NT ox = s1.ax, oy = s1.ay;
+  Line_nt<NT> l[3] = {oriented_line(s1), oriented_line(s2), oriented_line(s3)};
+  NT k[3];
+  const Site_nt<NT>* s[3] = {&s1, &s2, &s3};
+  for(int i = 0; i < 3; ++i)
+    k[i] = l[i].nx * (s[i]->ax - ox) + l[i].ny * (s[i]->ay - oy);
+  NT g2x = l[1].nx - l[0].nx, g2y = l[1].ny - l[0].ny;
+  NT g3x = l[2].nx - l[0].nx, g3y = l[2].ny - l[0].ny;
+  NT det = cross2(g2x, g2y, g3x, g3y);
+  if(!(det > 0))
+    return false;
+  NT b2 = k[1] - k[0], b3 = k[2] - k[0];
+  NT x = (b2 * g3y - b3 * g2y) / det;
+  NT y = (g2x * b3 - b2 * g3x) / det;
+  NT r = l[0].nx * x + l[0].ny * y - k[0];
+  if(!(r > 0))
+    return false;
+  c.x = ox + x;
+  c.y = oy + y;
+  c.r = r;
+  return true;
+}
+
+/// The disk tangent to the three generators `s[0], s[1], s[2]` whose cells
+/// meet at its centre in this counter-clockwise order.  Returns false when
+/// no such disk exists.  `rel` carries the exact symbolic relations between
+/// the sites (shared endpoints, flat joins), which select the degenerate
+/// constructions.
+template <class NT>
+bool medial_circle(const Site_nt<NT> s[3], const Triple_relations& rel, Circle_nt<NT>& c)
+{
+  for(int i = 0; i < 3; ++i)
+    for(int j = 0; j < 3; ++j)
+      if(i != j && rel.same[i][j])
+        return false;
+  int np = int(s[0].is_point) + int(s[1].is_point) + int(s[2].is_point);
+  if(np == 3) {
+    if(rel.ppp_orientation <= 0)
+      return false;
+    return circle_ppp(s[0], s[1], s[2], c);
+  }
+  if(np == 2) {
+    // rotate to (p, q, segment)
+    int k = s[0].is_point ? (s[1].is_point ? 2 : 1) : 0;   // index of the segment
+    int ip = (k + 1) % 3, iq = (k + 2) % 3;
+    if(rel.point_is_source[ip][k] || rel.point_is_target[iq][k])
+      return false;
+    if(rel.point_is_target[ip][k] && rel.point_is_source[iq][k])
+      return false;
+    if(rel.point_is_target[ip][k]) {
+      Line_nt<NT> l = oriented_line(s[k]);
+      return tangent_at_point_and_point(s[ip].ax, s[ip].ay, l, s[iq].ax, s[iq].ay, c);
+    }
+    if(rel.point_is_source[iq][k]) {
+      Line_nt<NT> l = oriented_line(s[k]);
+      return tangent_at_point_and_point(s[iq].ax, s[iq].ay, l, s[ip].ax, s[ip].ay, c);
+    }
+    return circle_pps(s[ip], s[iq], s[k], c);
+  }
+  if(np == 1) {
+    int ip = s[0].is_point ? 0 : (s[1].is_point ? 1 : 2);
+    int i1 = (ip + 1) % 3, i2 = (ip + 2) % 3;
+    if(rel.point_is_target[ip][i1] || rel.point_is_source[ip][i2])
+      return false;
+    if(rel.point_is_source[ip][i1] && rel.point_is_target[ip][i2])
+      return false;
+    if(rel.point_is_source[ip][i1]) {
+      Line_nt<NT> l1 = oriented_line(s[i1]), l2 = oriented_line(s[i2]);
+      return tangent_at_point_and_line(s[ip].ax, s[ip].ay, l1, l2, c);
+    }
+    if(rel.point_is_target[ip][i2]) {
+      Line_nt<NT> l1 = oriented_line(s[i1]), l2 = oriented_line(s[i2]);
+      return tangent_at_point_and_line(s[ip].ax, s[ip].ay, l2, l1, c);
+    }
+    if(rel.flat_join[i2][i1])
+      return false;
+    if(rel.flat_join[i1][i2]) {
+      Line_nt<NT> l = oriented_line(s[i1]);
+      return tangent_at_point_and_point(s[i1].bx, s[i1].by, l, s[ip].ax, s[ip].ay, c);
+    }
+    return circle_pss(s[ip], s[i1], s[i2], c);
+  }
+  // SSS
+  for(int i = 0; i < 3; ++i) {
+    int j = (i + 1) % 3, k = (i + 2) % 3;
+    if(rel.flat_join[j][i])
+      return false;
+    if(rel.flat_join[i][j]) {
+      Line_nt<NT> l = oriented_line(s[i]), m = oriented_line(s[k]);
+      return tangent_at_point_and_line(s[i].bx, s[i].by, l, m, c);
+    }
+  }
+  return circle_sss(s[0], s[1], s[2], c);
+}
+
+/// Whether the disk touches every segment site of the triple within the
+/// closed segment (not only its supporting line).  A segment whose contact
+/// is known to be one of its endpoints (a point site at that endpoint, a
+/// flat join) is not tested.  `tolerance` (relative, 0 for exact number
+/// types) admits contacts just beyond an endpoint.
+template <class NT>
+bool touches_segments(const Site_nt<NT> s[3], const Triple_relations& rel, const Circle_nt<NT>& c,
+                      double tolerance)
+{
+  for(int i = 0; i < 3; ++i) {
+    if(s[i].is_point) continue;
+    bool known = false;
+    for(int j = 0; j < 3; ++j)
+      if(j != i && (rel.point_is_source[j][i] || rel.point_is_target[j][i] ||
+                    rel.flat_join[i][j] || rel.flat_join[j][i]))
+        known = true;
+    if(known) continue;
+    NT dx = s[i].bx - s[i].ax, dy = s[i].by - s[i].ay;
+    NT slack = NT(tolerance) * (dx * dx + dy * dy);
+    if((c.x - s[i].ax) * dx + (c.y - s[i].ay) * dy < -slack) return false;
+    if((s[i].bx - c.x) * dx + (s[i].by - c.y) * dy < -slack) return false;
+  }
+  return true;
+}
+
+/// Position, along the separator from `P` to `Q`, of the point where the
+/// retracting tip meets the circle: the end of the chord nearer to `Q`,
+/// scaled by |PQ|^2 (0 at P, |PQ|^2 at Q).  False if the circle misses the line.
+template <class NT>
+bool chord_far_end(const NT& px, const NT& py, const NT& qx, const NT& qy,
+                   const Circle_nt<NT>& c, NT& t)
+{
+  NT dx = qx - px, dy = qy - py;
+  NT vx = c.x - px, vy = c.y - py;
+  NT d2 = dx * dx + dy * dy;
+  NT h = cross2(dx, dy, vx, vy);
+  NT rad = c.r * c.r * d2 - h * h;
+  if(rad < 0)
+    return false;
+  t = dx * vx + dy * vy + nt_sqrt_nonnegative(rad);
+  return true;
+}
+
+/// Position along the separator of the foot of the centre.
+template <class NT>
+NT foot_position(const NT& px, const NT& py, const NT& qx, const NT& qy, const Circle_nt<NT>& c)
+{
+  return (qx - px) * (c.x - px) + (qy - py) * (c.y - py);
+}
+
+} // namespace internal
+} // namespace PMA2
+} // namespace CGAL
+
+#endif // CGAL_PROGRESSIVE_MEDIAL_AXIS_2_INTERNAL_MEDIAL_CONSTRUCTIONS_H

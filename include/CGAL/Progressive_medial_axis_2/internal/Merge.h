@@ -1,0 +1,570 @@
+// Copyright (c) 2026 The Progressive_medial_axis_2 authors.
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+//
+// The topology-oriented merge of two medial axes along a shared segment
+// (Liu et al. 2016, Algorithms 1-5).
+//
+// Picture the separator C = PQ as a slit whose free end, the tip v_C,
+// retracts from P to Q.  The cell of the tip is bounded by the cells listed
+// in `L` (the mating list Phi(v_C)), in counter-clockwise order around the
+// tip, from the cell C+ of C on one side to the cell C- on the other:
+//
+//     L = [C+, g_1, ..., g_m, C-]
+//
+// Between two consecutive generators g_i, g_i+1 a new medial curve is being
+// traced by the corner of the tip's cell; it is an "open" edge of the
+// half-edge structure whose end vertex is not known yet.  The events are
+//   - switch points: the tip passes the foot of a vertex of the cell of C+
+//     (or C-); the generator beyond it enters L next to C+ (or C-);
+//   - vanishing points: the tip reaches the disk tangent to g_i-1, g_i,
+//     g_i+1; g_i leaves L, a branch point is created.
+// Switch points are known, in order, from the cells of C+ and C-; vanishing
+// points live in a priority queue, recomputed for the neighbours after each
+// event.  Every decision is topological except the order of events, which is
+// asked of the traits.  The cost is proportional to the number of cells that
+// touch the separator.
+//
+// Orientation conventions: every face cycle is counter-clockwise (face on
+// the left).  An open edge between consecutive nodes A, B of L is stored as
+// the half-edge of A, from its start vertex to its (future) end vertex.
+
+#ifndef CGAL_PROGRESSIVE_MEDIAL_AXIS_2_INTERNAL_MERGE_H
+#define CGAL_PROGRESSIVE_MEDIAL_AXIS_2_INTERNAL_MERGE_H
+
+#include <CGAL/Progressive_medial_axis_2/internal/Halfedge_structure.h>
+#include <CGAL/assertions.h>
+#include <CGAL/enum.h>
+
+#include <algorithm>
+#include <cstddef>
+#include <vector>
+
+namespace CGAL {
+namespace PMA2 {
+namespace internal {
+
+/// What one merge did.
+struct Merge_statistics {
+  std::size_t switches = 0;
+  std::size_t vanishings = 0;
+  std::size_t max_queue = 0;        // n_v: largest number of live vanishing candidates
+  std::size_t anomalies = 0;        // events forced to keep the topology valid
+};
+
+template <class Traits>
+class Medial_merge
+{
+public:
+  typedef typename Traits::Point_2 Point_2;
+  typedef typename Traits::FT FT;
+  typedef typename Traits::Site_2 Site_2;
+  typedef typename Traits::Event_time_2 Time;
+  typedef Halfedge_structure<Point_2, FT> Hds;
+
+  Medial_merge(Hds& hds, const std::vector<Point_2>& points, const Traits& traits)
+    : hds_(hds), points_(points), traits_(traits),
+      compare_(traits.compare_event_time_2_object())
+  {}
+
+  /// Site of a face.
+  Site_2 site(int f) const
+  {
+    const Hds_face& x = hds_.face(f);
+    return x.is_point ? Site_2::point(points_[x.p0])
+                      : Site_2::segment(points_[x.p0], points_[x.p1]);
+  }
+
+  /// Merges the two cells of a separator.  `hp` is the boundary half-edge,
+  /// from P to Q, of the separator's cell C+ on one side; `hm` is the
+  /// boundary half-edge, from Q to P, of its cell C- on the other side.  The
+  /// two cells and the separator disappear; the medial axis of the union is
+  /// left in the structure.
+  Merge_statistics merge(int hp, int hm)
+  {
+    stats_ = Merge_statistics();
+    Cp_ = hds_.face_of(hp);
+    Cm_ = hds_.face_of(hm);
+    vP_ = hds_.source(hp);
+    vQ_ = hds_.target(hp);
+    CGAL_precondition(hds_.source(hm) == vQ_ && hds_.target(hm) == vP_);
+    P_ = hds_.vertex(vP_).input_point;
+    Q_ = hds_.vertex(vQ_).input_point;
+    line_ = Site_2::segment(points_[P_], points_[Q_]);
+    site_p_ = site(Cp_);
+    site_m_ = site(Cm_);
+
+    plus_.clear();
+    for(int h = hds_.next(hp); h != hp; h = hds_.next(h)) plus_.push_back(h);
+    minus_.clear();
+    for(int h = hds_.next(hm); h != hm; h = hds_.next(h)) minus_.push_back(h);
+    CGAL_assertion(plus_.size() >= 2 && minus_.size() >= 2);
+
+    // The corners of the merged shape at P and Q.
+    const int o_plus = Hds::twin(hp), o_minus = Hds::twin(hm);
+    const int a = input_of(hds_.target(hds_.next(o_plus)));
+    const int b = input_of(hds_.source(hds_.prev(o_minus)));
+    const int c = input_of(hds_.target(hds_.next(o_minus)));
+    const int e = input_of(hds_.source(hds_.prev(o_plus)));
+    typename Traits::Orientation_2 orientation = traits_.orientation_2_object();
+    const Orientation turn_P = orientation(points_[a], points_[P_], points_[b]);
+    const Orientation turn_Q = orientation(points_[c], points_[Q_], points_[e]);
+
+    nodes_.clear();
+    events_.clear();
+    heap_.clear();
+    live_events_ = 0;
+    nodes_.push_back(Node{Cp_, NO_INDEX, 1, NO_INDEX, NO_INDEX});
+    nodes_.push_back(Node{Cm_, 0, NO_INDEX, NO_INDEX, NO_INDEX});
+    now_ = traits_.compute_start_time_2_object()(line_);
+
+    initialize(turn_P);
+    collect_switches();
+    run_events(turn_Q == RIGHT_TURN);
+    if(turn_Q == RIGHT_TURN)
+      terminate_reflex();
+    else
+      terminate_convex();
+
+    // The boundary: splice the outer cycles at P and Q.
+    const int before_P = hds_.prev(o_minus), after_P = hds_.next(o_plus);
+    const int before_Q = hds_.prev(o_plus), after_Q = hds_.next(o_minus);
+    hds_.link(before_P, after_P);
+    hds_.link(before_Q, after_Q);
+    outer_hint_ = after_P;
+
+    // Delete the cells of C+ and C-.
+    for(int h : plus_) hds_.delete_edge(h);
+    for(int h : minus_) hds_.delete_edge(h);
+    hds_.delete_edge(hp);
+    hds_.delete_edge(hm);
+    hds_.delete_face(Cp_);
+    hds_.delete_face(Cm_);
+
+    // A switch vertex left with two edges of the same two cells is no longer a vertex.
+    for(int w : switch_vertex_plus_) hds_.remove_degree_two_vertex(w);
+    for(int w : switch_vertex_minus_) hds_.remove_degree_two_vertex(w);
+    return stats_;
+  }
+
+  /// A live outer half-edge after the last merge.
+  int outer_hint() const { return outer_hint_; }
+
+private:
+  struct Node {
+    int face;
+    int prev, next;
+    int right_he;   // open edge to the next node: half-edge of this face, start -> end
+    int event;      // current vanishing candidate
+  };
+  struct Event {
+    Time time;
+    int node;
+    bool valid;
+  };
+  struct Switch {
+    int vertex;
+    int gnew, gold;        // generator entering L, generator it goes next to
+    int te_new, te_old;    // half-edges of those generators along the consumed cell
+    Time time;
+  };
+
+  int input_of(int v) const { return hds_.vertex(v).input_point; }
+
+  bool is_point_at(int f, int point) const
+  {
+    const Hds_face& x = hds_.face(f);
+    return x.is_point && x.p0 == point;
+  }
+
+  int face_across(int h) const { return hds_.face_of(Hds::twin(h)); }
+
+  int insert_after(int n, int face)
+  {
+    int id = int(nodes_.size());
+    int nx = nodes_[n].next;
+    nodes_.push_back(Node{face, n, nx, NO_INDEX, NO_INDEX});
+    nodes_[n].next = id;
+    nodes_[nx].prev = id;
+    return id;
+  }
+
+  void unlink_node(int n)
+  {
+    nodes_[nodes_[n].prev].next = nodes_[n].next;
+    nodes_[nodes_[n].next].prev = nodes_[n].prev;
+  }
+
+  // A new edge between `left` and `right`, leaving vertex `start`; its end is set later.
+  int open_edge(int start, int left, int right)
+  {
+    int h = hds_.new_edge(left, right);
+    hds_.he(Hds::twin(h)).vertex = start;
+    hds_.face(left).halfedge = h;
+    hds_.face(right).halfedge = Hds::twin(h);
+    return h;
+  }
+
+  // ---- initialization at P (Algorithm 3) ----
+  void initialize(Orientation turn_P)
+  {
+    const int k = int(plus_.size());
+    const int H1 = face_across(plus_[k - 1]);   // neighbour of C+ at P
+    const int H2 = face_across(minus_[0]);      // neighbour of C- at P
+    int first_open, last_open_twin;
+    if(turn_P != RIGHT_TURN || is_point_at(H1, P_) || is_point_at(H2, P_)) {
+      // Convex or flat corner, or P was already reflex on one side.
+      CGAL_assertion(turn_P == RIGHT_TURN || (!is_point_at(H1, P_) && !is_point_at(H2, P_)));
+      int n1 = insert_after(0, H1);
+      insert_after(n1, H2);
+      int h = open_edge(vP_, H1, H2);
+      nodes_[n1].right_he = h;
+      first_open = h;
+      last_open_twin = Hds::twin(h);
+    } else {
+      // P becomes reflex: a new point generator between the two edges.
+      int Pm = hds_.new_face(true, P_, P_);
+      int n1 = insert_after(0, H1);
+      int nm = insert_after(n1, Pm);
+      insert_after(nm, H2);
+      int h1 = open_edge(vP_, H1, Pm);
+      int h2 = open_edge(vP_, Pm, H2);
+      nodes_[n1].right_he = h1;
+      nodes_[nm].right_he = h2;
+      hds_.link(Hds::twin(h1), h2);
+      first_open = h1;
+      last_open_twin = Hds::twin(h2);
+    }
+    const int te_k = Hds::twin(plus_[k - 1]);
+    const int te_1 = Hds::twin(minus_[0]);
+    hds_.link(hds_.prev(te_k), first_open);
+    hds_.link(last_open_twin, hds_.next(te_1));
+    hds_.vertex(vP_).halfedge = last_open_twin;
+  }
+
+  // ---- the switch points of both cells, in order along the separator ----
+  void collect_switches()
+  {
+    typename Traits::Compute_switch_time_2 switch_time = traits_.compute_switch_time_2_object();
+    const int k = int(plus_.size());
+    switch_vertex_plus_.assign(k > 0 ? k - 1 : 0, NO_INDEX);
+    sw_plus_.clear();
+    // C+ cell walk: e_1 leaves Q, ..., e_k arrives at P; vertex w_j = target(e_j).
+    const int jmin = is_point_at(face_across(plus_[0]), Q_) ? 2 : 1;
+    for(int j = 1; j <= k - 1; ++j)
+      switch_vertex_plus_[j - 1] = hds_.target(plus_[j - 1]);
+    for(int j = k - 1; j >= jmin; --j) {
+      const int w = hds_.target(plus_[j - 1]);
+      const int G = face_across(plus_[j - 1]), Gp = face_across(plus_[j]);
+      Switch s{w, G, Gp, Hds::twin(plus_[j - 1]), Hds::twin(plus_[j]),
+               switch_time(line_, site_p_, site(G), site(Gp), hds_.vertex(w).point)};
+      sw_plus_.push_back(s);
+    }
+    const int km = int(minus_.size());
+    switch_vertex_minus_.assign(km > 0 ? km - 1 : 0, NO_INDEX);
+    sw_minus_.clear();
+    // C- cell walk: e'_1 leaves P, ..., e'_k' arrives at Q; vertex w'_j = target(e'_j).
+    const int jmax = is_point_at(face_across(minus_[km - 1]), Q_) ? km - 2 : km - 1;
+    for(int j = 1; j <= km - 1; ++j)
+      switch_vertex_minus_[j - 1] = hds_.target(minus_[j - 1]);
+    for(int j = 1; j <= jmax; ++j) {
+      const int w = hds_.target(minus_[j - 1]);
+      const int Gp = face_across(minus_[j - 1]), G = face_across(minus_[j]);
+      Switch s{w, G, Gp, Hds::twin(minus_[j]), Hds::twin(minus_[j - 1]),
+               switch_time(line_, site_m_, site(Gp), site(G), hds_.vertex(w).point)};
+      sw_minus_.push_back(s);
+    }
+  }
+
+  // ---- the priority queue of vanishing candidates ----
+  bool event_after(int a, int b) const
+  {
+    Comparison_result r = compare_(events_[a].time, events_[b].time);
+    if(r != EQUAL) return r == LARGER;
+    return a > b;
+  }
+
+  void invalidate(int n)
+  {
+    int ev = nodes_[n].event;
+    if(ev != NO_INDEX && events_[ev].valid) {
+      events_[ev].valid = false;
+      --live_events_;
+    }
+    nodes_[n].event = NO_INDEX;
+  }
+
+  void update_candidate(int n)
+  {
+    invalidate(n);
+    const int a = nodes_[n].prev, c = nodes_[n].next;
+    if(a == 0 || c == 1)
+      return;                     // next to C+ or C-: such a generator leaves by a switch
+    const int fa = nodes_[a].face, fb = nodes_[n].face, fc = nodes_[c].face;
+    if(fa == fc)
+      return;
+    Time t;
+    if(!traits_.compute_vanishing_time_2_object()(line_, site(fa), site(fb), site(fc), t))
+      return;
+    if(traits_.is_event_in_past_2_object()(t, now_, line_))
+      return;
+    int ev = int(events_.size());
+    events_.push_back(Event{t, n, true});
+    nodes_[n].event = ev;
+    heap_.push_back(ev);
+    std::push_heap(heap_.begin(), heap_.end(), [this](int x, int y) { return event_after(x, y); });
+    ++live_events_;
+    stats_.max_queue = (std::max)(stats_.max_queue, live_events_);
+  }
+
+  int top_event()
+  {
+    while(!heap_.empty() && !events_[heap_.front()].valid) {
+      std::pop_heap(heap_.begin(), heap_.end(), [this](int x, int y) { return event_after(x, y); });
+      heap_.pop_back();
+    }
+    return heap_.empty() ? NO_INDEX : heap_.front();
+  }
+
+  void pop_event()
+  {
+    int ev = heap_.front();
+    std::pop_heap(heap_.begin(), heap_.end(), [this](int x, int y) { return event_after(x, y); });
+    heap_.pop_back();
+    if(events_[ev].valid) {
+      events_[ev].valid = false;
+      --live_events_;
+      nodes_[events_[ev].node].event = NO_INDEX;
+    }
+  }
+
+  void advance_time(const Time& t)
+  {
+    if(compare_(t, now_) == LARGER)
+      now_ = t;
+  }
+
+  // ---- the sweep (Algorithm 5) ----
+  void run_events(bool q_reflex)
+  {
+    const Time t_end = traits_.compute_end_time_2_object()(line_);
+    std::size_t ip = 0, im = 0;
+    for(;;) {
+      int which = -1;
+      const Time* best = nullptr;
+      if(ip < sw_plus_.size()) {
+        which = 0;
+        best = &sw_plus_[ip].time;
+      }
+      if(im < sw_minus_.size() && (best == nullptr || compare_(sw_minus_[im].time, *best) == SMALLER)) {
+        which = 1;
+        best = &sw_minus_[im].time;
+      }
+      int ev = top_event();
+      if(ev != NO_INDEX) {
+        if(q_reflex && compare_(events_[ev].time, t_end) == LARGER) {
+          // beyond Q: the tip never gets there
+          pop_event();
+          continue;
+        }
+        if(best == nullptr || compare_(events_[ev].time, *best) == SMALLER)
+          which = 2;
+      }
+      if(which < 0)
+        break;
+      if(which == 0) {
+        advance_time(sw_plus_[ip].time);
+        switch_plus(sw_plus_[ip++]);
+      } else if(which == 1) {
+        advance_time(sw_minus_[im].time);
+        switch_minus(sw_minus_[im++]);
+      } else {
+        Time t = events_[ev].time;
+        int n = events_[ev].node;
+        pop_event();
+        advance_time(t);
+        vanish(n);
+      }
+    }
+  }
+
+  // Algorithm 1 on the C+ side: gold leaves Phi(C+), gnew enters L after C+.
+  void switch_plus(const Switch& s)
+  {
+    ++stats_.switches;
+    const int first = nodes_[0].next;
+    CGAL_assertion(nodes_[first].face == s.gold);
+    const int n = insert_after(0, s.gnew);
+    const int h = open_edge(s.vertex, s.gnew, s.gold);
+    hds_.link(hds_.prev(s.te_new), h);
+    hds_.link(Hds::twin(h), hds_.next(s.te_old));
+    hds_.vertex(s.vertex).halfedge = Hds::twin(h);
+    nodes_[n].right_he = h;
+    update_candidate(first);
+  }
+
+  // Algorithm 1 on the C- side: gold leaves Phi(C-), gnew enters L before C-.
+  void switch_minus(const Switch& s)
+  {
+    ++stats_.switches;
+    const int last = nodes_[1].prev;
+    CGAL_assertion(nodes_[last].face == s.gold);
+    insert_after(last, s.gnew);
+    const int h = open_edge(s.vertex, s.gold, s.gnew);
+    hds_.link(hds_.prev(s.te_old), h);
+    hds_.link(Hds::twin(h), hds_.next(s.te_new));
+    hds_.vertex(s.vertex).halfedge = Hds::twin(h);
+    nodes_[last].right_he = h;
+    update_candidate(last);
+  }
+
+  // Algorithm 2: the generator of node n leaves L at a new branch point.
+  void vanish(int n)
+  {
+    ++stats_.vanishings;
+    const int a = nodes_[n].prev, c = nodes_[n].next;
+    const int fa = nodes_[a].face, fb = nodes_[n].face, fc = nodes_[c].face;
+    Point_2 centre;
+    FT radius;
+    if(!traits_.construct_medial_disk_2_object()(site(fa), site(fb), site(fc), centre, radius)) {
+      ++stats_.anomalies;
+      centre = hds_.vertex(hds_.source(nodes_[n].right_he)).point;
+      radius = hds_.vertex(hds_.source(nodes_[n].right_he)).radius;
+    }
+    const int v = hds_.new_vertex(centre, radius);
+    const int AB = nodes_[a].right_he, BC = nodes_[n].right_he;
+    hds_.he(AB).vertex = v;
+    hds_.he(BC).vertex = v;
+    const int AC = open_edge(v, fa, fc);
+    hds_.link(AB, AC);
+    hds_.link(BC, Hds::twin(AB));
+    hds_.link(Hds::twin(AC), Hds::twin(BC));
+    hds_.vertex(v).halfedge = AB;
+    nodes_[a].right_he = AC;
+    invalidate(n);
+    unlink_node(n);
+    update_candidate(a);
+    update_candidate(c);
+  }
+
+  // ---- termination at Q (Algorithm 4) ----
+  // Convex or flat corner: the tip's cell shrinks to Q; one open edge ends there.
+  void terminate_convex()
+  {
+    // Topologically the list must be [C+, E1_out, E2_in, C-] now.
+    while(nodes_[nodes_[0].next].next != nodes_[1].prev &&
+          nodes_[0].next != nodes_[1].prev) {
+      ++stats_.anomalies;
+      vanish(nodes_[nodes_[0].next].next);
+    }
+    const int n1 = nodes_[0].next;
+    CGAL_assertion(nodes_[n1].next == nodes_[1].prev && n1 != 1);
+    const int h = nodes_[n1].right_he;
+    hds_.he(h).vertex = vQ_;
+    const int te_1 = Hds::twin(plus_[0]);
+    const int te_k = Hds::twin(minus_.back());
+    hds_.link(h, hds_.next(te_1));
+    hds_.link(hds_.prev(te_k), Hds::twin(h));
+    hds_.vertex(vQ_).halfedge = h;
+  }
+
+  // Reflex corner: the tip's cell becomes the cell of the reflex vertex Q.
+  void terminate_reflex()
+  {
+    const int F1 = face_across(plus_[0]);
+    const int Fk = face_across(minus_.back());
+    const bool q1 = is_point_at(F1, Q_), q2 = is_point_at(Fk, Q_);
+    const int Qm = q1 ? F1 : (q2 ? Fk : hds_.new_face(true, Q_, Q_));
+    const Site_2 site_q = Site_2::point(points_[Q_]);
+
+    std::vector<int>& g = chain_nodes_;
+    g.clear();
+    for(int n = nodes_[0].next; n != 1; n = nodes_[n].next) g.push_back(n);
+    const int m = int(g.size());
+    // chain edge i (0-based) runs from b_i to b_i+1 with Qm on its left
+    std::vector<int>& ch = chain_edges_;
+    ch.assign(m, NO_INDEX);
+    for(int i = 0; i < m; ++i)
+      ch[i] = hds_.new_edge(Qm, nodes_[g[i]].face);
+    // start vertex b_0
+    const int b0 = q1 ? hds_.target(plus_[0]) : vQ_;
+    const int bm = q2 ? hds_.target(minus_[minus_.size() - 2]) : vQ_;
+    hds_.he(Hds::twin(ch[0])).vertex = b0;
+    hds_.he(ch[m - 1]).vertex = bm;
+    for(int i = 0; i + 1 < m; ++i) {
+      const int fa = nodes_[g[i]].face, fb = nodes_[g[i + 1]].face;
+      Point_2 centre;
+      FT radius;
+      const int o = nodes_[g[i]].right_he;
+      if(!traits_.construct_medial_disk_2_object()(site_q, site(fa), site(fb), centre, radius)) {
+        ++stats_.anomalies;
+        centre = hds_.vertex(hds_.source(o)).point;
+        radius = hds_.vertex(hds_.source(o)).radius;
+      }
+      const int v = hds_.new_vertex(centre, radius);
+      hds_.he(o).vertex = v;
+      hds_.he(ch[i]).vertex = v;
+      hds_.he(Hds::twin(ch[i + 1])).vertex = v;
+      hds_.link(ch[i], ch[i + 1]);
+      hds_.link(o, Hds::twin(ch[i]));
+      hds_.link(Hds::twin(ch[i + 1]), Hds::twin(o));
+      hds_.vertex(v).halfedge = o;
+    }
+    for(int i = 0; i < m; ++i) {
+      hds_.face(nodes_[g[i]].face).halfedge = Hds::twin(ch[i]);
+    }
+    hds_.face(Qm).halfedge = ch[0];
+
+    int q_out, q_in;
+    const int te_1 = Hds::twin(plus_[0]);
+    if(q1) {
+      // b_0 is the top of the old normal of C+ at Q
+      const int te_2 = Hds::twin(plus_[1]);
+      hds_.link(hds_.prev(te_1), ch[0]);
+      hds_.link(Hds::twin(ch[0]), hds_.next(te_2));
+      q_out = hds_.next(te_1);
+    } else {
+      hds_.link(Hds::twin(ch[0]), hds_.next(te_1));
+      q_out = ch[0];
+    }
+    const int tk = Hds::twin(minus_.back());
+    if(q2) {
+      const int tk1 = Hds::twin(minus_[minus_.size() - 2]);
+      hds_.link(ch[m - 1], hds_.next(tk));
+      hds_.link(hds_.prev(tk1), Hds::twin(ch[m - 1]));
+      q_in = hds_.prev(tk);
+    } else {
+      hds_.link(hds_.prev(tk), Hds::twin(ch[m - 1]));
+      q_in = ch[m - 1];
+    }
+    hds_.link(q_in, q_out);
+    hds_.vertex(vQ_).halfedge = q_in;
+    if(q1) hds_.vertex(b0).halfedge = hds_.prev(ch[0]);
+    if(q2) hds_.vertex(bm).halfedge = ch[m - 1];
+  }
+
+  Hds& hds_;
+  const std::vector<Point_2>& points_;
+  const Traits& traits_;
+  typename Traits::Compare_event_time_2 compare_;
+
+  Merge_statistics stats_;
+  int Cp_ = NO_INDEX, Cm_ = NO_INDEX, vP_ = NO_INDEX, vQ_ = NO_INDEX, P_ = NO_INDEX, Q_ = NO_INDEX;
+  Site_2 line_, site_p_, site_m_;
+  Time now_;
+  int outer_hint_ = NO_INDEX;
+
+  std::vector<int> plus_, minus_;
+  std::vector<int> switch_vertex_plus_, switch_vertex_minus_;
+  std::vector<Switch> sw_plus_, sw_minus_;
+  std::vector<Node> nodes_;
+  std::vector<Event> events_;
+  std::vector<int> heap_;
+  std::size_t live_events_ = 0;
+  std::vector<int> chain_nodes_, chain_edges_;
+};
+
+} // namespace internal
+} // namespace PMA2
+} // namespace CGAL
+
+#endif // CGAL_PROGRESSIVE_MEDIAL_AXIS_2_INTERNAL_MERGE_H

@@ -1,0 +1,218 @@
+// Copyright (c) 2026 The Progressive_medial_axis_2 authors.
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+//
+// Interval arithmetic on MPFR numbers of a chosen precision: the second
+// stage of the filtered traits, between double intervals and CORE::Expr.
+// Comparisons return CGAL::Uncertain<bool>, whose conversion to bool throws
+// CGAL::Uncertain_conversion_exception when the interval cannot decide, as
+// with CGAL::Interval_nt.
+
+#ifndef CGAL_PROGRESSIVE_MEDIAL_AXIS_2_INTERNAL_MPFR_INTERVAL_H
+#define CGAL_PROGRESSIVE_MEDIAL_AXIS_2_INTERNAL_MPFR_INTERVAL_H
+
+#include <CGAL/Uncertain.h>
+#include <CGAL/Interval_nt.h>
+
+#include <mpfr.h>
+
+#include <algorithm>
+#include <utility>
+
+namespace CGAL {
+namespace PMA2 {
+namespace internal {
+
+class Mpfr_interval
+{
+public:
+  /// The precision, in bits, of the intervals created from now on in this thread.
+  static mpfr_prec_t& precision()
+  {
+    static thread_local mpfr_prec_t p = 256;
+    return p;
+  }
+
+  Mpfr_interval() { init(); mpfr_set_zero(lo_, 1); mpfr_set_zero(hi_, 1); }
+  Mpfr_interval(double d) { init(); mpfr_set_d(lo_, d, MPFR_RNDD); mpfr_set_d(hi_, d, MPFR_RNDU); }
+  Mpfr_interval(int i) { init(); mpfr_set_si(lo_, i, MPFR_RNDD); mpfr_set_si(hi_, i, MPFR_RNDU); }
+  Mpfr_interval(const Mpfr_interval& o)
+  {
+    init();
+    mpfr_set(lo_, o.lo_, MPFR_RNDD);
+    mpfr_set(hi_, o.hi_, MPFR_RNDU);
+  }
+  Mpfr_interval& operator=(const Mpfr_interval& o)
+  {
+    if(this != &o) {
+      mpfr_set(lo_, o.lo_, MPFR_RNDD);
+      mpfr_set(hi_, o.hi_, MPFR_RNDU);
+    }
+    return *this;
+  }
+  ~Mpfr_interval() { mpfr_clear(lo_); mpfr_clear(hi_); }
+
+  double inf() const { return mpfr_get_d(lo_, MPFR_RNDD); }
+  double sup() const { return mpfr_get_d(hi_, MPFR_RNDU); }
+  /// The double nearest to the midpoint.
+  double midpoint() const
+  {
+    mpfr_t m;
+    mpfr_init2(m, mpfr_get_prec(lo_) + 1);
+    mpfr_add(m, lo_, hi_, MPFR_RNDN);
+    mpfr_div_2ui(m, m, 1, MPFR_RNDN);
+    double d = mpfr_get_d(m, MPFR_RNDN);
+    mpfr_clear(m);
+    return d;
+  }
+  /// Whether the interval's two ends round to the same double.
+  bool rounds_to_one_double() const { return mpfr_get_d(lo_, MPFR_RNDN) == mpfr_get_d(hi_, MPFR_RNDN); }
+  Interval_nt<false> to_interval() const { return Interval_nt<false>(inf(), sup()); }
+  bool is_valid() const { return !mpfr_nan_p(lo_) && !mpfr_nan_p(hi_) && mpfr_lessequal_p(lo_, hi_); }
+
+  friend Mpfr_interval operator+(const Mpfr_interval& a, const Mpfr_interval& b)
+  {
+    Mpfr_interval r;
+    mpfr_add(r.lo_, a.lo_, b.lo_, MPFR_RNDD);
+    mpfr_add(r.hi_, a.hi_, b.hi_, MPFR_RNDU);
+    return r;
+  }
+  friend Mpfr_interval operator-(const Mpfr_interval& a, const Mpfr_interval& b)
+  {
+    Mpfr_interval r;
+    mpfr_sub(r.lo_, a.lo_, b.hi_, MPFR_RNDD);
+    mpfr_sub(r.hi_, a.hi_, b.lo_, MPFR_RNDU);
+    return r;
+  }
+  friend Mpfr_interval operator-(const Mpfr_interval& a)
+  {
+    Mpfr_interval r;
+    mpfr_neg(r.lo_, a.hi_, MPFR_RNDD);
+    mpfr_neg(r.hi_, a.lo_, MPFR_RNDU);
+    return r;
+  }
+  friend Mpfr_interval operator*(const Mpfr_interval& a, const Mpfr_interval& b)
+  {
+    Mpfr_interval r;
+    mpfr_t t;
+    mpfr_init2(t, precision());
+    const mpfr_srcptr x[2] = {a.lo_, a.hi_}, y[2] = {b.lo_, b.hi_};
+    mpfr_mul(r.lo_, x[0], y[0], MPFR_RNDD);
+    mpfr_mul(r.hi_, x[0], y[0], MPFR_RNDU);
+    for(int i = 0; i < 2; ++i)
+      for(int j = 0; j < 2; ++j) {
+        if(i == 0 && j == 0) continue;
+        mpfr_mul(t, x[i], y[j], MPFR_RNDD);
+        mpfr_min(r.lo_, r.lo_, t, MPFR_RNDD);
+        mpfr_mul(t, x[i], y[j], MPFR_RNDU);
+        mpfr_max(r.hi_, r.hi_, t, MPFR_RNDU);
+      }
+    mpfr_clear(t);
+    return r;
+  }
+  friend Mpfr_interval operator/(const Mpfr_interval& a, const Mpfr_interval& b)
+  {
+    // a divisor that may be zero cannot be decided here
+    if(mpfr_sgn(b.lo_) <= 0 && mpfr_sgn(b.hi_) >= 0)
+      throw Uncertain_conversion_exception("Mpfr_interval: division by an interval containing 0");
+    Mpfr_interval r;
+    mpfr_t t;
+    mpfr_init2(t, precision());
+    const mpfr_srcptr x[2] = {a.lo_, a.hi_}, y[2] = {b.lo_, b.hi_};
+    mpfr_div(r.lo_, x[0], y[0], MPFR_RNDD);
+    mpfr_div(r.hi_, x[0], y[0], MPFR_RNDU);
+    for(int i = 0; i < 2; ++i)
+      for(int j = 0; j < 2; ++j) {
+        if(i == 0 && j == 0) continue;
+        mpfr_div(t, x[i], y[j], MPFR_RNDD);
+        mpfr_min(r.lo_, r.lo_, t, MPFR_RNDD);
+        mpfr_div(t, x[i], y[j], MPFR_RNDU);
+        mpfr_max(r.hi_, r.hi_, t, MPFR_RNDU);
+      }
+    mpfr_clear(t);
+    return r;
+  }
+  Mpfr_interval& operator+=(const Mpfr_interval& b) { return *this = *this + b; }
+  Mpfr_interval& operator-=(const Mpfr_interval& b) { return *this = *this - b; }
+  Mpfr_interval& operator*=(const Mpfr_interval& b) { return *this = *this * b; }
+  Mpfr_interval& operator/=(const Mpfr_interval& b) { return *this = *this / b; }
+
+  friend Mpfr_interval sqrt(const Mpfr_interval& a)
+  {
+    if(mpfr_sgn(a.hi_) < 0)
+      throw Uncertain_conversion_exception("Mpfr_interval: square root of a negative interval");
+    Mpfr_interval r;
+    if(mpfr_sgn(a.lo_) <= 0)
+      mpfr_set_zero(r.lo_, 1);
+    else
+      mpfr_sqrt(r.lo_, a.lo_, MPFR_RNDD);
+    mpfr_sqrt(r.hi_, a.hi_, MPFR_RNDU);
+    return r;
+  }
+  friend Mpfr_interval abs(const Mpfr_interval& a)
+  {
+    if(mpfr_sgn(a.lo_) >= 0) return a;
+    if(mpfr_sgn(a.hi_) <= 0) return -a;
+    Mpfr_interval r;
+    mpfr_set_zero(r.lo_, 1);
+    mpfr_neg(r.hi_, a.lo_, MPFR_RNDU);
+    mpfr_max(r.hi_, r.hi_, a.hi_, MPFR_RNDU);
+    return r;
+  }
+
+  friend Uncertain<bool> operator<(const Mpfr_interval& a, const Mpfr_interval& b)
+  {
+    if(mpfr_less_p(a.hi_, b.lo_)) return true;
+    if(mpfr_greaterequal_p(a.lo_, b.hi_)) return false;
+    return Uncertain<bool>::indeterminate();
+  }
+  friend Uncertain<bool> operator>(const Mpfr_interval& a, const Mpfr_interval& b) { return b < a; }
+  friend Uncertain<bool> operator<=(const Mpfr_interval& a, const Mpfr_interval& b) { return !(b < a); }
+  friend Uncertain<bool> operator>=(const Mpfr_interval& a, const Mpfr_interval& b) { return !(a < b); }
+  friend Uncertain<bool> operator==(const Mpfr_interval& a, const Mpfr_interval& b)
+  {
+    if(mpfr_less_p(a.hi_, b.lo_) || mpfr_less_p(b.hi_, a.lo_)) return false;
+    if(mpfr_equal_p(a.lo_, a.hi_) && mpfr_equal_p(b.lo_, b.hi_) && mpfr_equal_p(a.lo_, b.lo_)) return true;
+    return Uncertain<bool>::indeterminate();
+  }
+  friend Uncertain<bool> operator!=(const Mpfr_interval& a, const Mpfr_interval& b) { return !(a == b); }
+
+  friend Uncertain<bool> operator<(const Mpfr_interval& a, int b) { return a < Mpfr_interval(b); }
+  friend Uncertain<bool> operator>(const Mpfr_interval& a, int b) { return a > Mpfr_interval(b); }
+  friend Uncertain<bool> operator<=(const Mpfr_interval& a, int b) { return a <= Mpfr_interval(b); }
+  friend Uncertain<bool> operator>=(const Mpfr_interval& a, int b) { return a >= Mpfr_interval(b); }
+  friend Uncertain<bool> operator==(const Mpfr_interval& a, int b) { return a == Mpfr_interval(b); }
+
+  /// Sign comparison of two intervals.
+  friend Uncertain<Comparison_result> compare(const Mpfr_interval& a, const Mpfr_interval& b)
+  {
+    if(mpfr_less_p(a.hi_, b.lo_)) return SMALLER;
+    if(mpfr_less_p(b.hi_, a.lo_)) return LARGER;
+    if(mpfr_equal_p(a.lo_, a.hi_) && mpfr_equal_p(b.lo_, b.hi_) && mpfr_equal_p(a.lo_, b.lo_)) return EQUAL;
+    return Uncertain<Comparison_result>::indeterminate();
+  }
+
+private:
+  void init()
+  {
+    mpfr_init2(lo_, precision());
+    mpfr_init2(hi_, precision());
+  }
+  mpfr_t lo_, hi_;
+};
+
+/// Sets the precision of the MPFR intervals in a scope.
+class Mpfr_precision_scope
+{
+public:
+  explicit Mpfr_precision_scope(mpfr_prec_t p) : old_(Mpfr_interval::precision()) { Mpfr_interval::precision() = p; }
+  ~Mpfr_precision_scope() { Mpfr_interval::precision() = old_; }
+
+private:
+  mpfr_prec_t old_;
+};
+
+} // namespace internal
+} // namespace PMA2
+} // namespace CGAL
+
+#endif // CGAL_PROGRESSIVE_MEDIAL_AXIS_2_INTERNAL_MPFR_INTERVAL_H

@@ -1,0 +1,118 @@
+// Copyright (c) 2026 The Progressive_medial_axis_2 authors.
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+//
+// The shape decomposition of the region-growing driver: a constrained
+// Delaunay triangulation of the polygon and the adjacency of its triangles.
+
+#ifndef CGAL_PROGRESSIVE_MEDIAL_AXIS_2_INTERNAL_TRIANGULATE_H
+#define CGAL_PROGRESSIVE_MEDIAL_AXIS_2_INTERNAL_TRIANGULATE_H
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Constrained_Delaunay_triangulation_2.h>
+#include <CGAL/Triangulation_vertex_base_with_info_2.h>
+#include <CGAL/Triangulation_face_base_with_info_2.h>
+#include <CGAL/number_utils.h>
+
+#include <deque>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace PMA2 {
+namespace internal {
+
+/// A triangle of the decomposition: its vertices (indices of input points,
+/// counter-clockwise) and, across edge i (opposite vertex i), the index of
+/// the neighbouring triangle inside the polygon, or -1 across the boundary.
+struct Triangle {
+  int v[3];
+  int nbr[3];
+};
+
+/// Triangulates the polygon whose rings are the point ranges
+/// [ring_start[r], ring_start[r+1]) of `points`, consecutive along each ring.
+template <class Point_2>
+std::vector<Triangle> triangulate_rings(const std::vector<Point_2>& points,
+                                        const std::vector<int>& ring_start)
+{
+  typedef Exact_predicates_inexact_constructions_kernel K;
+  typedef Triangulation_vertex_base_with_info_2<int, K> Vb;
+  typedef Triangulation_face_base_with_info_2<int, K> Fbi;
+  typedef Constrained_triangulation_face_base_2<K, Fbi> Fb;
+  typedef Triangulation_data_structure_2<Vb, Fb> Tds;
+  typedef Constrained_Delaunay_triangulation_2<K, Tds, Exact_predicates_tag> CDT;
+
+  std::vector<std::pair<K::Point_2, int> > pts;
+  pts.reserve(points.size());
+  for(std::size_t i = 0; i < points.size(); ++i)
+    pts.emplace_back(K::Point_2(CGAL::to_double(points[i].x()), CGAL::to_double(points[i].y())), int(i));
+  CDT cdt;
+  cdt.insert(pts.begin(), pts.end());
+  std::vector<typename CDT::Vertex_handle> handle(points.size());
+  for(auto v = cdt.finite_vertices_begin(); v != cdt.finite_vertices_end(); ++v)
+    handle[v->info()] = v;
+  for(std::size_t r = 0; r + 1 < ring_start.size(); ++r) {
+    int b = ring_start[r], e = ring_start[r + 1];
+    for(int i = b; i < e; ++i)
+      cdt.insert_constraint(handle[i], handle[i + 1 < e ? i + 1 : b]);
+  }
+
+  // Nesting level of every face: 0 outside, 1 inside the outer ring, 2 in a hole...
+  for(auto f = cdt.all_faces_begin(); f != cdt.all_faces_end(); ++f) f->info() = -1;
+  std::deque<typename CDT::Face_handle> border;
+  auto flood = [&](typename CDT::Face_handle start, int level) {
+    if(start->info() != -1) return;
+    std::deque<typename CDT::Face_handle> queue;
+    queue.push_back(start);
+    start->info() = level;
+    while(!queue.empty()) {
+      auto f = queue.front();
+      queue.pop_front();
+      for(int i = 0; i < 3; ++i) {
+        auto n = f->neighbor(i);
+        if(n->info() != -1) continue;
+        if(cdt.is_constrained(std::make_pair(f, i))) {
+          border.push_back(n);
+        } else {
+          n->info() = level;
+          queue.push_back(n);
+        }
+      }
+    }
+  };
+  border.push_back(cdt.infinite_face());
+  int level = 0;
+  while(!border.empty()) {
+    std::deque<typename CDT::Face_handle> current;
+    current.swap(border);
+    for(auto f : current) flood(f, level);
+    ++level;
+  }
+
+  std::vector<Triangle> tris;
+  int count = 0;
+  for(auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f) {
+    if(f->info() % 2 == 1) {
+      f->info() = -2 - count;   // remember the triangle's index
+      ++count;
+    }
+  }
+  tris.resize(count);
+  for(auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f) {
+    if(f->info() > -2) continue;
+    Triangle& t = tris[-2 - f->info()];
+    for(int i = 0; i < 3; ++i) {
+      t.v[i] = f->vertex(i)->info();
+      auto n = f->neighbor(i);
+      bool inside = !cdt.is_infinite(n) && n->info() <= -2;
+      t.nbr[i] = (inside && !cdt.is_constrained(std::make_pair(f, i))) ? -2 - n->info() : -1;
+    }
+  }
+  return tris;
+}
+
+} // namespace internal
+} // namespace PMA2
+} // namespace CGAL
+
+#endif // CGAL_PROGRESSIVE_MEDIAL_AXIS_2_INTERNAL_TRIANGULATE_H

@@ -1,0 +1,543 @@
+// This file is part of the CGAL package Progressive_medial_axis_2.
+
+#ifndef CGAL_PROGRESSIVE_MEDIAL_AXIS_2_VALIDATE_POLYGON_H
+#define CGAL_PROGRESSIVE_MEDIAL_AXIS_2_VALIDATE_POLYGON_H
+
+/// \file validate_polygon.h
+/// Geometric validation of a polygon with holes given as rings.
+
+#include <CGAL/Progressive_medial_axis_2/Input_error.h>
+
+#include <CGAL/enum.h>
+#include <CGAL/number_utils.h>
+
+#include <algorithm>
+#include <cstddef>
+#include <iterator>
+#include <set>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace PMA2 {
+namespace internal {
+
+/*
+  Validation of a polygon with holes given as rings, in O(n log n) time for n vertices,
+  with exact predicates only (`Orientation_2` and `Compare_xy_2` of the kernel).
+
+  The checks run in this order; the first problem found is reported:
+
+   1. every ring has at least 3 vertices;
+   2. every coordinate is finite;
+   3. every ring has at least 3 distinct vertices;
+   4. no zero-length edge (two consecutive vertices of a ring are equal);
+   5. no repeated vertex (two equal vertices anywhere in the polygon);
+   6. no spike (a vertex whose two edges are collinear and fold back, angle 0);
+   7. no intersection between two edges other than the common vertex of two
+      consecutive edges of a ring (a Shamos-Hoey sweep, see below);
+   8. the rings nest properly: every hole lies directly inside the outer ring.
+
+  Steps 3 and 5 sort all the vertices lexicographically (`Compare_xy_2`, ties broken by
+  input order); the sorted order is also the event order of the sweep.
+
+  After step 5 all vertices are pairwise distinct, so two edges share an endpoint if and
+  only if they are consecutive edges of one ring; after step 6 such edges meet only at
+  that endpoint. Any other contact between two edges (a proper crossing, a vertex lying
+  on another edge, a collinear overlap) is an error.
+
+  Step 7 is the Shamos-Hoey sweep. The sweep line moves in lexicographic (x, then y)
+  order, which is equivalent to sweeping with a line rotated by an infinitesimal angle,
+  so vertical edges need no special case: an edge goes from its lexicographically
+  smaller ("left") endpoint to its larger ("right") one. At each vertex v, the edges
+  ending at v are removed from the status first (and their former neighbours, which
+  become adjacent, are tested against each other), then the edges starting at v are
+  inserted (and tested against their new neighbours). The status is a balanced tree
+  (`std::set`) ordered from bottom to top; an edge being inserted at v is compared with
+  an edge t of the status by the orientation of v with respect to t, or, when t also
+  starts at v, by the orientation of the two right endpoints. A collinear answer there
+  means that v lies on t, or that the two edges overlap: an error found by the
+  comparison itself. Every pair of edges that becomes adjacent in the status is tested
+  with an exact segment-intersection test. The usual argument shows this finds an
+  intersection whenever one exists: just before the sweep reaches the lexicographically
+  smallest bad contact point p, the order of the status is consistent, and the edges
+  through p form a contiguous block in which two of the offending edges are adjacent
+  (or, if p is a vertex, the edges inserted at p land next to the edge containing p).
+
+  Step 8 uses the same sweep. For each ring q, the orientation of q is read at its
+  lexicographically smallest vertex (a convex vertex). When the smallest vertex v of a
+  ring r is reached, the edge t directly below the edges of r starting at v is the first
+  edge hit by a ray shot downwards from v. If there is no such edge, r is not enclosed
+  by any ring. Otherwise, with q the ring of t: if the interior of q lies above t
+  (q counterclockwise and t directed left to right, or q clockwise and t directed right
+  to left), r lies directly inside q; otherwise r is a sibling of q and has the same
+  parent. The parent of q is known since the smallest vertex of q precedes that of r.
+  These parents are only meaningful when no intersection exists, so they are checked
+  after the sweep completed: the outer ring must have no parent and every hole must have
+  the outer ring as parent.
+*/
+template <class Kernel>
+class Polygon_rings_validator
+{
+  typedef typename Kernel::Point_2 Point_2;
+  typedef typename Kernel::Orientation_2 Orientation_2;
+  typedef typename Kernel::Compare_xy_2 Compare_xy_2;
+  typedef std::size_t Id; // global vertex index; edge e goes from vertex e to next(e)
+
+  enum Contact { NO_CONTACT, CROSSING, TOUCHING, OVERLAPPING };
+
+  // An edge in the status. Its endpoints are copied into the tree node so that the
+  // comparisons made while descending the tree touch no other memory.
+  struct Status_edge
+  {
+    Point_2 left, right; // the smaller and larger endpoint
+    Id left_id;          // global index of `left`
+    Id id;               // the edge
+  };
+  struct Status_less
+  {
+    const Polygon_rings_validator* validator;
+    bool operator()(const Status_edge& a, const Status_edge& b) const
+    {
+      return validator->edge_below(a, b);
+    }
+  };
+  typedef std::set<Status_edge, Status_less> Status;
+
+public:
+  explicit Polygon_rings_validator(const Rings<Point_2>& rings, const Kernel& kernel = Kernel())
+    : m_rings(rings),
+      m_orientation(kernel.orientation_2_object()),
+      m_compare_xy(kernel.compare_xy_2_object())
+  {}
+
+  void run()
+  {
+    if(m_rings.empty())
+      throw Input_error("empty polygon");
+    check_ring_sizes();
+    build_vertex_arrays();
+    check_finite_coordinates();
+    sort_vertices();
+    check_distinct_vertices_per_ring();
+    check_zero_length_edges();
+    check_repeated_vertices();
+    check_spikes();
+    sweep();
+    check_nesting();
+  }
+
+private:
+  // ---------------------------------------------------------------- helpers
+
+  const Point_2& point(Id g) const { return *m_points[g]; }
+  Id ring_of(Id g) const { return m_ring_of[g]; }
+  Id local(Id g) const { return g - m_ring_begin[m_ring_of[g]]; }
+  Id next(Id g) const
+  {
+    Id r = m_ring_of[g];
+    return (g + 1 < m_ring_begin[r + 1]) ? g + 1 : m_ring_begin[r];
+  }
+  Id prev(Id g) const
+  {
+    Id r = m_ring_of[g];
+    return (g > m_ring_begin[r]) ? g - 1 : m_ring_begin[r + 1] - 1;
+  }
+  bool equal(Id a, Id b) const { return m_compare_xy(point(a), point(b)) == CGAL::EQUAL; }
+
+  std::string ring_name(Id g) const { return "ring " + std::to_string(ring_of(g)); }
+  std::string vertex_name(Id g) const
+  {
+    return ring_name(g) + " vertex " + std::to_string(local(g));
+  }
+  std::string edge_name(Id e) const
+  {
+    return ring_name(e) + " edge " + std::to_string(local(e)) + " (vertices " +
+           std::to_string(local(e)) + "-" + std::to_string(local(next(e))) + ")";
+  }
+  std::string point_text(Id g) const
+  {
+    return format_point(CGAL::to_double(point(g).x()), CGAL::to_double(point(g).y()));
+  }
+  [[noreturn]] void fail(const std::string& what, Id g) const
+  {
+    throw Input_error(what, static_cast<int>(ring_of(g)), static_cast<int>(local(g)));
+  }
+
+  // ---------------------------------------------------------------- steps 1 to 6
+
+  void check_ring_sizes() const
+  {
+    for(std::size_t r = 0; r < m_rings.size(); ++r)
+      if(m_rings[r].size() < 3)
+        throw Input_error("ring " + std::to_string(r) + " has fewer than 3 distinct vertices",
+                          static_cast<int>(r));
+  }
+
+  void build_vertex_arrays()
+  {
+    std::size_t n = 0;
+    for(const auto& ring : m_rings)
+      n += ring.size();
+    m_points.reserve(n);
+    m_ring_of.reserve(n);
+    m_ring_begin.reserve(m_rings.size() + 1);
+    for(std::size_t r = 0; r < m_rings.size(); ++r) {
+      m_ring_begin.push_back(m_points.size());
+      for(const Point_2& p : m_rings[r]) {
+        m_points.push_back(&p);
+        m_ring_of.push_back(r);
+      }
+    }
+    m_ring_begin.push_back(m_points.size());
+  }
+
+  void check_finite_coordinates() const
+  {
+    for(Id g = 0; g < m_points.size(); ++g)
+      if(!CGAL::is_finite(point(g).x()) || !CGAL::is_finite(point(g).y()))
+        fail("non-finite coordinate: " + vertex_name(g), g);
+  }
+
+  void sort_vertices()
+  {
+    // Sorting copies of the points (rather than indices) keeps the comparisons local.
+    std::vector<std::pair<Point_2, Id> > keyed;
+    keyed.reserve(m_points.size());
+    for(Id g = 0; g < m_points.size(); ++g)
+      keyed.emplace_back(point(g), g);
+    std::sort(keyed.begin(), keyed.end(),
+              [this](const std::pair<Point_2, Id>& a, const std::pair<Point_2, Id>& b) {
+                CGAL::Comparison_result c = m_compare_xy(a.first, b.first);
+                return c == CGAL::SMALLER || (c == CGAL::EQUAL && a.second < b.second);
+              });
+    m_order.resize(keyed.size());
+    for(std::size_t k = 0; k < keyed.size(); ++k)
+      m_order[k] = keyed[k].second;
+  }
+
+  // In the sorted order, equal points are contiguous and sorted by global index, hence
+  // by ring: a vertex is the first of its ring at its location if the previous vertex
+  // in the order is at another location or in another ring.
+  void check_distinct_vertices_per_ring() const
+  {
+    std::vector<std::size_t> distinct(m_rings.size(), 0);
+    for(std::size_t k = 0; k < m_order.size(); ++k) {
+      Id g = m_order[k];
+      if(k == 0 || ring_of(m_order[k - 1]) != ring_of(g) || !equal(m_order[k - 1], g))
+        ++distinct[ring_of(g)];
+    }
+    for(std::size_t r = 0; r < m_rings.size(); ++r)
+      if(distinct[r] < 3)
+        throw Input_error("ring " + std::to_string(r) + " has fewer than 3 distinct vertices",
+                          static_cast<int>(r));
+  }
+
+  void check_zero_length_edges() const
+  {
+    for(Id g = 0; g < m_points.size(); ++g)
+      if(equal(g, next(g)))
+        fail("zero-length edge: " + vertex_name(g) + " equals vertex " +
+             std::to_string(local(next(g))), g);
+  }
+
+  // Reports, among the vertices equal to an earlier vertex (in input order), the
+  // earliest one, together with the first vertex at the same location.
+  void check_repeated_vertices() const
+  {
+    bool found = false;
+    Id first = 0, repeat = 0;
+    std::size_t group_begin = 0;
+    for(std::size_t k = 1; k < m_order.size(); ++k) {
+      if(!equal(m_order[k - 1], m_order[k])) {
+        group_begin = k;
+        continue;
+      }
+      if(k == group_begin + 1 && (!found || m_order[k] < repeat)) {
+        found = true;
+        first = m_order[group_begin];
+        repeat = m_order[k];
+      }
+    }
+    if(found)
+      fail("repeated vertex: " + vertex_name(first) + " equals " + vertex_name(repeat) +
+           " at " + point_text(first), first);
+  }
+
+  // A spike: the previous and next vertices are collinear with the vertex and on the
+  // same side of it (the vertices are distinct here).
+  bool is_spike(Id g) const
+  {
+    Id a = prev(g), c = next(g);
+    return m_orientation(point(a), point(g), point(c)) == CGAL::COLLINEAR &&
+           m_compare_xy(point(a), point(g)) == m_compare_xy(point(c), point(g));
+  }
+
+  void check_spikes() const
+  {
+    for(Id g = 0; g < m_points.size(); ++g)
+      if(is_spike(g))
+        fail("spike: " + vertex_name(g) + " folds back", g);
+  }
+
+  // ---------------------------------------------------------------- step 7: the sweep
+
+  // The status order: is edge a below edge b at the current position of the sweep?
+  // One of the two edges is being inserted, at its left endpoint; the other one is in
+  // the status. A degenerate answer is a contact (the left endpoint of the new edge lies
+  // in the interior of the other edge, or both start at the same vertex and overlap),
+  // recorded here and reported by the caller once the insertion is done.
+  bool edge_below(const Status_edge& a, const Status_edge& b) const
+  {
+    if(a.id == b.id)
+      return false;
+    if(a.left_id == b.left_id) {
+      CGAL::Orientation o = m_orientation(a.left, b.right, a.right);
+      if(o != CGAL::COLLINEAR)
+        return o == CGAL::RIGHT_TURN;
+      record_contact(OVERLAPPING, a.id, b.id, a.left_id);
+      return a.id < b.id;
+    }
+    if(m_compare_xy(a.left, b.left) == CGAL::LARGER) {
+      // a is being inserted: where is its left endpoint with respect to b?
+      CGAL::Orientation o = m_orientation(b.left, b.right, a.left);
+      if(o != CGAL::COLLINEAR)
+        return o == CGAL::RIGHT_TURN;
+      record_contact(TOUCHING, a.id, b.id, a.left_id);
+      return a.id < b.id;
+    }
+    // b is being inserted: where is its left endpoint with respect to a?
+    CGAL::Orientation o = m_orientation(a.left, a.right, b.left);
+    if(o != CGAL::COLLINEAR)
+      return o == CGAL::LEFT_TURN;
+    record_contact(TOUCHING, b.id, a.id, b.left_id);
+    return a.id < b.id;
+  }
+
+  void record_contact(Contact contact, Id a, Id b, Id vertex) const
+  {
+    if(m_contact != NO_CONTACT)
+      return;
+    m_contact = contact;
+    m_contact_a = a;
+    m_contact_b = b;
+    m_contact_vertex = vertex;
+  }
+
+  // Throws for a contact between edges a and b; for TOUCHING, `vertex` is the vertex
+  // (an endpoint of a) lying on edge b.
+  [[noreturn]] void report_contact(Contact contact, Id a, Id b, Id vertex) const
+  {
+    if(contact == TOUCHING) {
+      // If an edge of `vertex` runs along b, report the overlap rather than the vertex.
+      for(Id e : { prev(vertex), vertex }) {
+        Id other = (e == vertex) ? next(vertex) : e;
+        if(m_orientation(point(b), point(next(b)), point(other)) == CGAL::COLLINEAR)
+          report_contact(OVERLAPPING, e, b, vertex);
+      }
+      fail("self-intersection: " + vertex_name(vertex) + " lies on " + edge_name(b), vertex);
+    }
+    if(b < a)
+      std::swap(a, b);
+    fail("self-intersection: " + edge_name(a) +
+         (contact == CROSSING ? " crosses " : " overlaps ") + edge_name(b), a);
+  }
+
+  // Exact test of two edges; throws if they touch anywhere except at the common
+  // vertex of consecutive edges.
+  void check_pair(Id a, Id b) const
+  {
+    if(a == b)
+      return;
+    if(ring_of(a) == ring_of(b) && (next(a) == b || next(b) == a)) {
+      Id shared = (next(a) == b) ? b : a;
+      Id x = (shared == b) ? a : b;             // start of the edge ending at `shared`
+      Id y = next(shared);                      // end of the edge starting at `shared`
+      if(m_orientation(point(x), point(shared), point(y)) == CGAL::COLLINEAR &&
+         m_compare_xy(point(x), point(shared)) == m_compare_xy(point(y), point(shared)))
+        report_contact(OVERLAPPING, a, b, shared);
+      return;
+    }
+    Id a0 = a, a1 = next(a), b0 = b, b1 = next(b);
+    CGAL::Orientation o1 = m_orientation(point(a0), point(a1), point(b0));
+    CGAL::Orientation o2 = m_orientation(point(a0), point(a1), point(b1));
+    if(o1 == CGAL::COLLINEAR && o2 == CGAL::COLLINEAR) {
+      // All four points on a line: the edges meet iff their extents overlap (they
+      // cannot share only an endpoint, the vertices being distinct).
+      if(m_compare_xy(point(m_right[a]), point(m_left[b])) == CGAL::SMALLER ||
+         m_compare_xy(point(m_right[b]), point(m_left[a])) == CGAL::SMALLER)
+        return;
+      report_contact(OVERLAPPING, a, b, a);
+    }
+    if(o1 == o2)
+      return;
+    CGAL::Orientation o3 = m_orientation(point(b0), point(b1), point(a0));
+    CGAL::Orientation o4 = m_orientation(point(b0), point(b1), point(a1));
+    if(o3 == o4)
+      return;
+    if(o1 == CGAL::COLLINEAR) report_contact(TOUCHING, b, a, b0);
+    if(o2 == CGAL::COLLINEAR) report_contact(TOUCHING, b, a, b1);
+    if(o3 == CGAL::COLLINEAR) report_contact(TOUCHING, a, b, a0);
+    if(o4 == CGAL::COLLINEAR) report_contact(TOUCHING, a, b, a1);
+    report_contact(CROSSING, a, b, a);
+  }
+
+  void remove_edge(Id e)
+  {
+    typename Status::iterator it = m_handles[e];
+    typename Status::iterator after = std::next(it);
+    bool has_below = (it != m_status->begin());
+    typename Status::iterator below = has_below ? std::prev(it) : it;
+    m_status->erase(it);
+    if(has_below && after != m_status->end())
+      check_pair(below->id, after->id);
+  }
+
+  void insert_edge(Id e)
+  {
+    typename Status::iterator it =
+      m_status->insert(Status_edge{ point(m_left[e]), point(m_right[e]), m_left[e], e }).first;
+    if(m_contact != NO_CONTACT)
+      report_contact(m_contact, m_contact_a, m_contact_b, m_contact_vertex);
+    m_handles[e] = it;
+    if(it != m_status->begin())
+      check_pair(std::prev(it)->id, e);
+    typename Status::iterator after = std::next(it);
+    if(after != m_status->end())
+      check_pair(e, after->id);
+  }
+
+  void sweep()
+  {
+    const std::size_t n = m_points.size();
+    m_left.resize(n);
+    m_right.resize(n);
+    for(Id e = 0; e < n; ++e) {
+      Id f = next(e);
+      bool forward = m_compare_xy(point(e), point(f)) == CGAL::SMALLER;
+      m_left[e] = forward ? e : f;
+      m_right[e] = forward ? f : e;
+    }
+
+    // The smallest vertex and the orientation of each ring.
+    const std::size_t nr = m_rings.size();
+    std::vector<Id> smallest(nr, n);
+    for(Id g : m_order)
+      if(smallest[ring_of(g)] == n)
+        smallest[ring_of(g)] = g;
+    m_ccw.assign(nr, false);
+    for(std::size_t r = 0; r < nr; ++r) {
+      Id m = smallest[r];
+      m_ccw[r] = m_orientation(point(prev(m)), point(m), point(next(m))) == CGAL::LEFT_TURN;
+    }
+    m_parent.assign(nr, -1);
+
+    Status status(Status_less{this});
+    m_status = &status;
+    m_handles.resize(n);
+    m_contact = NO_CONTACT;
+
+    for(Id v : m_order) {
+      Id incident[2] = { prev(v), v }; // the edges ending and starting at v in the ring
+      for(Id e : incident)
+        if(m_right[e] == v)
+          remove_edge(e);
+      for(Id e : incident)
+        if(m_left[e] == v)
+          insert_edge(e);
+
+      Id r = ring_of(v);
+      if(v == smallest[r]) {
+        // Both edges of v start at v; find the edge directly below them.
+        Id e1 = incident[0], e2 = incident[1];
+        Id lower = (m_orientation(point(v), point(m_right[e1]), point(m_right[e2])) ==
+                    CGAL::LEFT_TURN) ? e1 : e2;
+        typename Status::iterator it = m_handles[lower];
+        if(it != status.begin()) {
+          Id t = std::prev(it)->id;
+          Id q = ring_of(t);
+          bool interior_above = (m_ccw[q] == (m_left[t] == t));
+          m_parent[r] = interior_above ? static_cast<long>(q) : m_parent[q];
+        }
+      }
+    }
+    m_status = nullptr;
+  }
+
+  // ---------------------------------------------------------------- step 8
+
+  void check_nesting() const
+  {
+    // The outer ring inside a hole implies a hole with no parent, reported below.
+    for(std::size_t r = 1; r < m_rings.size(); ++r) {
+      if(m_parent[r] == 0)
+        continue;
+      std::string hole = "hole " + std::to_string(r) + " (ring " + std::to_string(r) + ")";
+      if(m_parent[r] < 0)
+        throw Input_error(hole + " is not inside the outer ring", static_cast<int>(r));
+      std::string p = std::to_string(m_parent[r]);
+      throw Input_error(hole + " lies inside hole " + p + " (ring " + p + ")",
+                        static_cast<int>(r));
+    }
+  }
+
+  // ---------------------------------------------------------------- data
+
+  const Rings<Point_2>& m_rings;
+  Orientation_2 m_orientation;
+  Compare_xy_2 m_compare_xy;
+
+  std::vector<const Point_2*> m_points; // by global index, ring after ring
+  std::vector<Id> m_ring_of;            // global index -> ring
+  std::vector<Id> m_ring_begin;         // ring -> first global index (one past the end at the end)
+  std::vector<Id> m_order;              // global indices sorted lexicographically
+
+  std::vector<Id> m_left, m_right;      // edge -> its smaller / larger endpoint
+  std::vector<bool> m_ccw;              // ring -> counterclockwise?
+  std::vector<long> m_parent;           // ring -> directly enclosing ring, or -1
+  Status* m_status = nullptr;
+  std::vector<typename Status::iterator> m_handles; // edge -> its place in the status
+
+  mutable Contact m_contact = NO_CONTACT;
+  mutable Id m_contact_a = 0, m_contact_b = 0, m_contact_vertex = 0;
+};
+
+} // namespace internal
+
+/*!
+\ingroup PkgProgressiveMedialAxis2IO
+
+Checks that `rings` describe a valid polygon with holes: ring 0 is the outer boundary,
+the other rings are the holes (either orientation is accepted for any ring, and a vertex
+with an angle of exactly \f$\pi\f$, collinear with its neighbours, is valid).
+
+Throws `Input_error` naming the ring(s) and vertex or edge indices of the first problem
+found (edge `i` of a ring goes from vertex `i` to vertex `(i+1) mod` ring size), for:
+- a ring with fewer than 3 (distinct) vertices;
+- a non-finite coordinate;
+- a zero-length edge (two consecutive equal vertices);
+- a repeated vertex (two equal points anywhere in the polygon, in the same ring or not);
+- a spike (two consecutive edges collinear and folding back, angle 0);
+- any intersection or contact between two edges that are not consecutive in the same
+  ring (a proper crossing, a vertex lying on another edge, a collinear overlap), whether
+  they belong to the same ring or not;
+- a hole not inside the outer ring, or a hole inside another hole.
+
+Runs in \f$O(n \log n)\f$ time for \f$n\f$ vertices in total, using only the exact
+predicates `Kernel::Orientation_2` and `Kernel::Compare_xy_2` (exact with
+`CGAL::Exact_predicates_inexact_constructions_kernel`); there is no tolerance.
+
+\tparam Kernel a \cgal kernel; `Kernel::Point_2` is the point type of `rings`.
+*/
+template <class Kernel>
+void validate_polygon_rings(const Rings<typename Kernel::Point_2>& rings)
+{
+  internal::Polygon_rings_validator<Kernel> validator(rings);
+  validator.run();
+}
+
+} // namespace PMA2
+} // namespace CGAL
+
+#endif // CGAL_PROGRESSIVE_MEDIAL_AXIS_2_VALIDATE_POLYGON_H

@@ -1,0 +1,577 @@
+// Copyright (c) 2026 The Progressive_medial_axis_2 authors.
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+
+#ifndef CGAL_PROGRESSIVE_MEDIAL_AXIS_TRAITS_2_H
+#define CGAL_PROGRESSIVE_MEDIAL_AXIS_TRAITS_2_H
+
+#include <CGAL/Progressive_medial_axis_2/internal/Medial_constructions.h>
+#include <CGAL/Progressive_medial_axis_2/internal/Mpfr_interval.h>
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Simple_cartesian.h>
+#include <CGAL/CORE_Expr.h>
+#include <CGAL/Interval_nt.h>
+#include <CGAL/enum.h>
+#include <CGAL/number_utils.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <memory>
+#include <type_traits>
+
+namespace CGAL {
+
+namespace PMA2 {
+namespace internal {
+
+/// A generator of the medial axis as the traits see it: a point, or a
+/// segment from `p` to `q` with the shape on its left.
+template <class Point_2_>
+struct Site {
+  typedef Point_2_ Point_2;
+  bool is_point = true;
+  Point_2 p, q;
+
+  static Site point(const Point_2& a) { Site s; s.is_point = true; s.p = a; s.q = a; return s; }
+  static Site segment(const Point_2& a, const Point_2& b) { Site s; s.is_point = false; s.p = a; s.q = b; return s; }
+  const Point_2& source() const { return p; }
+  const Point_2& target() const { return q; }
+
+  friend bool operator==(const Site& a, const Site& b)
+  {
+    if(a.is_point != b.is_point) return false;
+    return a.is_point ? a.p == b.p : (a.p == b.p && a.q == b.q);
+  }
+};
+
+/// Exact symbolic relations of a triple, from exact predicates of `K`.
+template <class K, class Site_>
+Triple_relations triple_relations(const Site_ s[3], const K& k = K())
+{
+  typename K::Orientation_2 orientation = k.orientation_2_object();
+  Triple_relations rel;
+  for(int i = 0; i < 3; ++i)
+    for(int j = 0; j < 3; ++j) {
+      if(i == j) continue;
+      rel.same[i][j] = (s[i] == s[j]);
+      if(s[i].is_point && !s[j].is_point) {
+        rel.point_is_source[i][j] = (s[i].p == s[j].p);
+        rel.point_is_target[i][j] = (s[i].p == s[j].q);
+      }
+      if(!s[i].is_point && !s[j].is_point)
+        rel.flat_join[i][j] = (s[i].q == s[j].p) &&
+                              orientation(s[i].p, s[i].q, s[j].q) == COLLINEAR;
+    }
+  if(s[0].is_point && s[1].is_point && s[2].is_point)
+    rel.ppp_orientation = int(orientation(s[0].p, s[1].p, s[2].p));
+  return rel;
+}
+
+template <class NT, class Site_, class Convert>
+Site_nt<NT> site_nt(const Site_& s, const Convert& cv)
+{
+  Site_nt<NT> r;
+  r.is_point = s.is_point;
+  r.ax = cv(s.p.x()); r.ay = cv(s.p.y());
+  r.bx = cv(s.q.x()); r.by = cv(s.q.y());
+  r.axis_parallel = !s.is_point && (s.p.x() == s.q.x() || s.p.y() == s.q.y());
+  return r;
+}
+
+enum Time_kind : unsigned char { TIME_ZERO, TIME_END, TIME_SWITCH, TIME_VANISH };
+
+/// A vertex of the separator's cell whose disk passes through an endpoint of
+/// the separator (a reflex vertex there) lies on the normal at that endpoint:
+/// its switch time is known exactly.
+template <class Site_>
+Time_kind switch_time_kind(const Site_& line, const Site_& a, const Site_& b)
+{
+  if((a.is_point && a.p == line.p) || (b.is_point && b.p == line.p)) return TIME_ZERO;
+  if((a.is_point && a.p == line.q) || (b.is_point && b.p == line.q)) return TIME_END;
+  return TIME_SWITCH;
+}
+
+/// Evaluates an event time in number type NT.  Returns false when a
+/// vanishing event does not exist (for a switch time, when the disk cannot
+/// be built: the caller then falls back on the stored vertex).
+template <class NT, class Site_, class Convert>
+bool evaluate_time(Time_kind kind, const Site_& c, const Site_* s, const Triple_relations& rel,
+                   const Convert& cv, NT& t)
+{
+  NT px = cv(c.p.x()), py = cv(c.p.y()), qx = cv(c.q.x()), qy = cv(c.q.y());
+  switch(kind) {
+  case TIME_ZERO:
+    t = NT(0);
+    return true;
+  case TIME_END:
+    t = (qx - px) * (qx - px) + (qy - py) * (qy - py);
+    return true;
+  default:
+    break;
+  }
+  Site_nt<NT> sn[3] = {site_nt<NT>(s[0], cv), site_nt<NT>(s[1], cv), site_nt<NT>(s[2], cv)};
+  Circle_nt<NT> circle;
+  if(!medial_circle(sn, rel, circle))
+    return false;
+  if(kind == TIME_SWITCH) {
+    t = foot_position(px, py, qx, qy, circle);
+    return true;
+  }
+  // a vanishing point needs a disk that touches the segments themselves
+  const double tolerance = std::is_floating_point<NT>::value ? 1e-12 : 0.0;
+  if(!touches_segments(sn, rel, circle, tolerance))
+    return false;
+  return chord_far_end(px, py, qx, qy, circle, t);
+}
+
+struct Identity_convert {
+  template <class T> const T& operator()(const T& x) const { return x; }
+};
+
+template <class NT>
+struct To_nt_convert {
+  template <class T> NT operator()(const T& x) const { return NT(x); }
+};
+
+} // namespace internal
+} // namespace PMA2
+
+/*!
+\ingroup PkgProgressiveMedialAxis2Traits
+
+The traits model for a kernel `K` whose number type has a square root: every
+construction and every decision of the merge is computed in `K::FT`.
+
+- With `Exact_predicates_inexact_constructions_kernel` (`FT` is `double`) the
+  decisions are made in floating point; predicates on input points are exact.
+  This is the fastest model and the one of the paper's implementation.
+- With `Exact_predicates_exact_constructions_kernel_with_sqrt`
+  (`Simple_cartesian<CORE::Expr>`) every decision and construction is exact.
+
+\cgalModels `ProgressiveMedialAxisTraits_2`
+*/
+template <class K>
+class Progressive_medial_axis_traits_2
+{
+public:
+  typedef K Kernel;
+  typedef typename K::FT FT;
+  typedef typename K::Point_2 Point_2;
+  /// A generator: a point, or a segment with the shape on its left.
+  typedef PMA2::internal::Site<Point_2> Site_2;
+  /// The position of an event along the separator.
+  typedef FT Event_time_2;
+  typedef typename K::Orientation_2 Orientation_2;
+
+  /// Whether the event decisions of this model are exact.
+  static constexpr bool Has_exact_decisions = !std::is_floating_point<FT>::value;
+
+  Orientation_2 orientation_2_object() const { return Kernel().orientation_2_object(); }
+
+  /// Constructs the disk tangent to three sites in counter-clockwise order.
+  struct Construct_medial_disk_2 {
+    bool operator()(const Site_2& a, const Site_2& b, const Site_2& c,
+                    Point_2& centre, FT& radius) const
+    {
+      Site_2 s[3] = {a, b, c};
+      PMA2::internal::Triple_relations rel = PMA2::internal::triple_relations<Kernel>(s);
+      PMA2::internal::Identity_convert cv;
+      PMA2::internal::Site_nt<FT> sn[3] = {PMA2::internal::site_nt<FT>(a, cv),
+                                           PMA2::internal::site_nt<FT>(b, cv),
+                                           PMA2::internal::site_nt<FT>(c, cv)};
+      PMA2::internal::Circle_nt<FT> circle;
+      if(!PMA2::internal::medial_circle(sn, rel, circle))
+        return false;
+      centre = Point_2(circle.x, circle.y);
+      radius = circle.r;
+      return true;
+    }
+  };
+  Construct_medial_disk_2 construct_medial_disk_2_object() const { return Construct_medial_disk_2(); }
+
+  /// The time 0 (the source of the separator) and the time of its target.
+  struct Compute_start_time_2 {
+    Event_time_2 operator()(const Site_2&) const { return FT(0); }
+  };
+  struct Compute_end_time_2 {
+    Event_time_2 operator()(const Site_2& c) const
+    {
+      FT t;
+      PMA2::internal::evaluate_time<FT>(PMA2::internal::TIME_END, c, (const Site_2*)nullptr,
+                                        PMA2::internal::Triple_relations(),
+                                        PMA2::internal::Identity_convert(), t);
+      return t;
+    }
+  };
+  Compute_start_time_2 compute_start_time_2_object() const { return Compute_start_time_2(); }
+  Compute_end_time_2 compute_end_time_2_object() const { return Compute_end_time_2(); }
+
+  /// Time, along the separator `line` (from its source P to its target Q),
+  /// of the foot of the disk tangent to `c, a, b` in counter-clockwise
+  /// order, where `c` is one side of the separator (`line` or its reverse):
+  /// a vertex of the cell of `c`.  `fallback` is the stored vertex, used if
+  /// the disk cannot be rebuilt from its generators.
+  struct Compute_switch_time_2 {
+    Event_time_2 operator()(const Site_2& line, const Site_2& c, const Site_2& a, const Site_2& b,
+                            const Point_2& fallback) const
+    {
+      Site_2 s[3] = {c, a, b};
+      PMA2::internal::Triple_relations rel = PMA2::internal::triple_relations<Kernel>(s);
+      FT t;
+      if(PMA2::internal::evaluate_time<FT>(PMA2::internal::switch_time_kind(line, a, b), line, s, rel,
+                                           PMA2::internal::Identity_convert(), t))
+        return t;
+      return (line.q.x() - line.p.x()) * (fallback.x() - line.p.x()) +
+             (line.q.y() - line.p.y()) * (fallback.y() - line.p.y());
+    }
+  };
+  Compute_switch_time_2 compute_switch_time_2_object() const { return Compute_switch_time_2(); }
+
+  /// Time at which the tip retracting along `c` meets the disk tangent to
+  /// `a, b, d` (in counter-clockwise order): the vanishing of `b`.  False if
+  /// there is no such disk or it does not meet the separator's line.
+  struct Compute_vanishing_time_2 {
+    bool operator()(const Site_2& c, const Site_2& a, const Site_2& b, const Site_2& d,
+                    Event_time_2& t) const
+    {
+      Site_2 s[3] = {a, b, d};
+      PMA2::internal::Triple_relations rel = PMA2::internal::triple_relations<Kernel>(s);
+      return PMA2::internal::evaluate_time<FT>(PMA2::internal::TIME_VANISH, c, s, rel,
+                                               PMA2::internal::Identity_convert(), t);
+    }
+  };
+  Compute_vanishing_time_2 compute_vanishing_time_2_object() const { return Compute_vanishing_time_2(); }
+
+  struct Compare_event_time_2 {
+    Comparison_result operator()(const Event_time_2& a, const Event_time_2& b) const
+    {
+      return CGAL::compare(a, b);
+    }
+  };
+  Compare_event_time_2 compare_event_time_2_object() const { return Compare_event_time_2(); }
+
+  /// Whether an event computed at time `t` lies before the current time
+  /// `now` on the separator `c`, so that it will never happen.  With
+  /// floating-point decisions, times within a few ulps of `now` count as now.
+  struct Is_event_in_past_2 {
+    bool operator()(const Event_time_2& t, const Event_time_2& now, const Site_2& c) const
+    {
+      if constexpr(Has_exact_decisions) {
+        return CGAL::compare(t, now) == SMALLER;
+      } else {
+        FT scale = Compute_end_time_2()(c);
+        return t < now - FT(1e-12) * scale;
+      }
+    }
+  };
+  Is_event_in_past_2 is_event_in_past_2_object() const { return Is_event_in_past_2(); }
+};
+
+/*!
+\ingroup PkgProgressiveMedialAxis2Traits
+
+The filtered traits model: every decision is exact, and almost all are
+taken in floating point.  A decision is evaluated first in double interval
+arithmetic (`Interval_nt`), then, when the interval cannot decide, in MPFR
+interval arithmetic at 256 and at 2048 bits, and only then exactly with the
+number type of `EK` (default `CORE::Expr`), which in practice happens only
+for exact ties of degenerate inputs.
+
+Constructed vertices are taken from the double intervals when these are
+tight (within about 1e-13 of the coordinates' magnitude), otherwise from the
+MPFR intervals once both ends round to the same double (the exact point
+correctly rounded), otherwise from the exact value rounded to double.
+Points are those of `CK` (double coordinates).
+
+\cgalModels `ProgressiveMedialAxisTraits_2`
+*/
+template <class CK = Exact_predicates_inexact_constructions_kernel,
+          class EK = Simple_cartesian<CORE::Expr> >
+class Progressive_medial_axis_filtered_traits_2
+{
+public:
+  typedef CK Kernel;
+  typedef typename CK::FT FT;
+  typedef typename CK::Point_2 Point_2;
+  typedef PMA2::internal::Site<Point_2> Site_2;
+  typedef typename CK::Orientation_2 Orientation_2;
+  typedef typename EK::FT Exact_FT;
+  typedef Interval_nt<false> Interval;
+  typedef PMA2::internal::Mpfr_interval Mpfr;
+
+  static constexpr bool Has_exact_decisions = true;
+
+  /// Counters of the filter stages (shared by all objects of this class in
+  /// the thread).
+  struct Filter_statistics {
+    std::size_t interval_evaluations = 0;  ///< times and disks evaluated in double intervals
+    std::size_t mpfr_evaluations = 0;      ///< ... that needed MPFR intervals
+    std::size_t exact_evaluations = 0;     ///< ... that needed the exact number type
+    std::size_t mpfr_comparisons = 0;      ///< comparisons of times decided by MPFR intervals
+    std::size_t exact_comparisons = 0;     ///< comparisons of times decided exactly
+  };
+  static Filter_statistics& filter_statistics()
+  {
+    static thread_local Filter_statistics s;
+    return s;
+  }
+
+  /// An event time: an interval that encloses it, and what is needed to
+  /// evaluate it again more precisely on demand.
+  class Event_time_2 {
+  public:
+    Event_time_2() : approx_(0) {}
+    const Interval& approx() const { return approx_; }
+    double to_double() const { return CGAL::to_double(approx_); }
+
+    /// The time in MPFR intervals at the current MPFR precision.
+    /// Throws `Uncertain_conversion_exception` if a branch cannot be decided.
+    bool mpfr(Mpfr& t) const
+    {
+      PMA2::internal::To_nt_convert<Mpfr> cv;
+      return PMA2::internal::evaluate_time<Mpfr>(kind_, c_, s_, rel_, cv, t);
+    }
+
+    const Exact_FT& exact() const
+    {
+      if(!exact_) {
+        ++filter_statistics().exact_evaluations;
+        Exact_FT t(0);
+        PMA2::internal::To_nt_convert<Exact_FT> cv;
+        PMA2::internal::evaluate_time<Exact_FT>(kind_, c_, s_, rel_, cv, t);
+        exact_ = std::make_shared<Exact_FT>(t);
+      }
+      return *exact_;
+    }
+
+  private:
+    friend class Progressive_medial_axis_filtered_traits_2;
+    Interval approx_;
+    PMA2::internal::Time_kind kind_ = PMA2::internal::TIME_ZERO;
+    Site_2 c_, s_[3];
+    PMA2::internal::Triple_relations rel_;
+    mutable std::shared_ptr<Exact_FT> exact_;
+  };
+
+  Orientation_2 orientation_2_object() const { return Kernel().orientation_2_object(); }
+
+  /// The precisions, in bits, of the MPFR stages.
+  static constexpr mpfr_prec_t mpfr_precisions[2] = {256, 2048};
+
+private:
+  // Evaluates a time: double intervals, MPFR intervals, exactly.
+  static bool make_time(PMA2::internal::Time_kind kind, const Site_2& c, const Site_2* s,
+                        Event_time_2& t)
+  {
+    t.kind_ = kind;
+    t.c_ = c;
+    if(s != nullptr) {
+      for(int i = 0; i < 3; ++i) t.s_[i] = s[i];
+      t.rel_ = PMA2::internal::triple_relations<Kernel>(s);
+    }
+    t.exact_.reset();
+    ++filter_statistics().interval_evaluations;
+    {
+      Protect_FPU_rounding<true> protection;
+      try {
+        Interval v;
+        PMA2::internal::To_nt_convert<Interval> cv;
+        bool ok = PMA2::internal::evaluate_time<Interval>(kind, c, t.s_, t.rel_, cv, v);
+        if(!ok)
+          return false;
+        if(CGAL_NTS is_finite(v.inf()) && CGAL_NTS is_finite(v.sup())) {
+          t.approx_ = v;
+          return true;
+        }
+      } catch(Uncertain_conversion_exception&) {
+      }
+    }
+    ++filter_statistics().mpfr_evaluations;
+    for(mpfr_prec_t p : mpfr_precisions) {
+      PMA2::internal::Mpfr_precision_scope scope(p);
+      try {
+        Mpfr v;
+        if(!t.mpfr(v))
+          return false;
+        t.approx_ = v.to_interval();
+        return true;
+      } catch(Uncertain_conversion_exception&) {
+      }
+    }
+    ++filter_statistics().exact_evaluations;
+    Exact_FT e(0);
+    PMA2::internal::To_nt_convert<Exact_FT> cv;
+    if(!PMA2::internal::evaluate_time<Exact_FT>(kind, c, t.s_, t.rel_, cv, e))
+      return false;
+    t.exact_ = std::make_shared<Exact_FT>(e);
+    t.approx_ = CGAL::to_interval(e);
+    return true;
+  }
+
+public:
+  struct Compute_start_time_2 {
+    Event_time_2 operator()(const Site_2& c) const
+    {
+      Event_time_2 t;
+      make_time(PMA2::internal::TIME_ZERO, c, nullptr, t);
+      return t;
+    }
+  };
+  struct Compute_end_time_2 {
+    Event_time_2 operator()(const Site_2& c) const
+    {
+      Event_time_2 t;
+      make_time(PMA2::internal::TIME_END, c, nullptr, t);
+      return t;
+    }
+  };
+  Compute_start_time_2 compute_start_time_2_object() const { return Compute_start_time_2(); }
+  Compute_end_time_2 compute_end_time_2_object() const { return Compute_end_time_2(); }
+
+  struct Compute_switch_time_2 {
+    Event_time_2 operator()(const Site_2& line, const Site_2& c, const Site_2& a, const Site_2& b,
+                            const Point_2& fallback) const
+    {
+      Site_2 s[3] = {c, a, b};
+      Event_time_2 t;
+      if(make_time(PMA2::internal::switch_time_kind(line, a, b), line, s, t))
+        return t;
+      // The disk cannot be rebuilt from its generators: use the foot of the
+      // stored vertex, computed exactly.
+      Exact_FT e = (Exact_FT(line.q.x()) - Exact_FT(line.p.x())) * (Exact_FT(fallback.x()) - Exact_FT(line.p.x())) +
+                   (Exact_FT(line.q.y()) - Exact_FT(line.p.y())) * (Exact_FT(fallback.y()) - Exact_FT(line.p.y()));
+      t.exact_ = std::make_shared<Exact_FT>(e);
+      t.approx_ = CGAL::to_interval(e);
+      return t;
+    }
+  };
+  Compute_switch_time_2 compute_switch_time_2_object() const { return Compute_switch_time_2(); }
+
+  struct Compute_vanishing_time_2 {
+    bool operator()(const Site_2& c, const Site_2& a, const Site_2& b, const Site_2& d,
+                    Event_time_2& t) const
+    {
+      Site_2 s[3] = {a, b, d};
+      return make_time(PMA2::internal::TIME_VANISH, c, s, t);
+    }
+  };
+  Compute_vanishing_time_2 compute_vanishing_time_2_object() const { return Compute_vanishing_time_2(); }
+
+  struct Compare_event_time_2 {
+    Comparison_result operator()(const Event_time_2& a, const Event_time_2& b) const
+    {
+      Uncertain<Comparison_result> r = CGAL::compare(a.approx(), b.approx());
+      if(is_certain(r))
+        return get_certain(r);
+      // the two ends of one separator
+      if(a.kind_ == b.kind_ && a.kind_ <= PMA2::internal::TIME_END && a.c_ == b.c_)
+        return EQUAL;
+      if(!a.exact_ || !b.exact_) {
+        for(mpfr_prec_t p : mpfr_precisions) {
+          PMA2::internal::Mpfr_precision_scope scope(p);
+          try {
+            Mpfr va, vb;
+            if(a.mpfr(va) && b.mpfr(vb)) {
+              Uncertain<Comparison_result> m = compare(va, vb);
+              if(is_certain(m)) {
+                ++filter_statistics().mpfr_comparisons;
+                return get_certain(m);
+              }
+            }
+          } catch(Uncertain_conversion_exception&) {
+          }
+        }
+      }
+      ++filter_statistics().exact_comparisons;
+      return CGAL::compare(a.exact(), b.exact());
+    }
+  };
+  Compare_event_time_2 compare_event_time_2_object() const { return Compare_event_time_2(); }
+
+  struct Is_event_in_past_2 {
+    bool operator()(const Event_time_2& t, const Event_time_2& now, const Site_2&) const
+    {
+      return Compare_event_time_2()(t, now) == SMALLER;
+    }
+  };
+  Is_event_in_past_2 is_event_in_past_2_object() const { return Is_event_in_past_2(); }
+
+  /// The disk tangent to three sites, rounded to double.
+  struct Construct_medial_disk_2 {
+    bool operator()(const Site_2& a, const Site_2& b, const Site_2& c,
+                    Point_2& centre, FT& radius) const
+    {
+      Site_2 s[3] = {a, b, c};
+      PMA2::internal::Triple_relations rel = PMA2::internal::triple_relations<Kernel>(s);
+      ++filter_statistics().interval_evaluations;
+      {
+        Protect_FPU_rounding<true> protection;
+        try {
+          PMA2::internal::Circle_nt<Interval> circle;
+          if(!disk<Interval>(s, rel, circle))
+            return false;
+          double scale = (std::max)({std::fabs(circle.x.inf()), std::fabs(circle.x.sup()),
+                                     std::fabs(circle.y.inf()), std::fabs(circle.y.sup())});
+          if(tight(circle.x, scale) && tight(circle.y, scale) && tight(circle.r, scale)) {
+            centre = Point_2(CGAL::to_double(circle.x), CGAL::to_double(circle.y));
+            radius = CGAL::to_double(circle.r);
+            return true;
+          }
+        } catch(Uncertain_conversion_exception&) {
+        }
+      }
+      ++filter_statistics().mpfr_evaluations;
+      for(mpfr_prec_t p : mpfr_precisions) {
+        PMA2::internal::Mpfr_precision_scope scope(p);
+        try {
+          PMA2::internal::Circle_nt<Mpfr> circle;
+          if(!disk<Mpfr>(s, rel, circle))
+            return false;
+          if(circle.x.rounds_to_one_double() && circle.y.rounds_to_one_double() &&
+             circle.r.rounds_to_one_double()) {
+            centre = Point_2(circle.x.midpoint(), circle.y.midpoint());
+            radius = circle.r.midpoint();
+            return true;
+          }
+        } catch(Uncertain_conversion_exception&) {
+        }
+      }
+      ++filter_statistics().exact_evaluations;
+      PMA2::internal::Circle_nt<Exact_FT> circle;
+      if(!disk<Exact_FT>(s, rel, circle))
+        return false;
+      centre = Point_2(CGAL::to_double(circle.x), CGAL::to_double(circle.y));
+      radius = CGAL::to_double(circle.r);
+      return true;
+    }
+
+  private:
+    template <class NT>
+    static bool disk(const Site_2* s, const PMA2::internal::Triple_relations& rel,
+                     PMA2::internal::Circle_nt<NT>& circle)
+    {
+      PMA2::internal::To_nt_convert<NT> cv;
+      PMA2::internal::Site_nt<NT> sn[3] = {PMA2::internal::site_nt<NT>(s[0], cv),
+                                           PMA2::internal::site_nt<NT>(s[1], cv),
+                                           PMA2::internal::site_nt<NT>(s[2], cv)};
+      return PMA2::internal::medial_circle(sn, rel, circle);
+    }
+
+    // A double interval is tight when its width is below 2^-42 of the
+    // magnitude of the centre's coordinates: its midpoint is then within
+    // about 1e-13 of the exact value, relative to the coordinates.
+    static bool tight(const Interval& v, double scale)
+    {
+      double lo = v.inf(), hi = v.sup();
+      if(!std::isfinite(lo) || !std::isfinite(hi))
+        return false;
+      return hi - lo <= std::ldexp(scale, -42);
+    }
+  };
+  Construct_medial_disk_2 construct_medial_disk_2_object() const { return Construct_medial_disk_2(); }
+};
+
+} // namespace CGAL
+
+#endif // CGAL_PROGRESSIVE_MEDIAL_AXIS_TRAITS_2_H

@@ -1,0 +1,16 @@
+#!/usr/bin/env bash
+# Builds the package and runs its main job: a region-growing progressive
+# medial axis of a shape shipped with the project, drawn at several steps.
+# Pictures and data go to out/.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+scripts/install_deps.sh
+cmake -S . -B build -DCMAKE_BUILD_TYPE=Release > build-configure.log
+cmake --build build -j2 --target progressive_medial_axis
+mkdir -p out
+shape=examples/Progressive_medial_axis_2/data/maze20.wkt
+build/examples/Progressive_medial_axis_2/progressive_medial_axis --stats \
+  --frames 8 --frames-prefix out/maze20_step \
+  --svg out/maze20_axis.svg --geojson out/maze20_axis.geojson --wkt-out out/maze20_axis.wkt \
+  "$shape"
+echo "pictures: out/maze20_step_000.svg ... out/maze20_step_007.svg (progressive), out/maze20_axis.svg (final)"

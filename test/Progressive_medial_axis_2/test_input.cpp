@@ -1,0 +1,917 @@
+// Tests of the input layer of Progressive_medial_axis_2: WKT and GeoJSON readers, the
+// WKT writer, and the geometric validation of polygons with holes.
+//
+// Reads only files under PMA_TEST_DATA (test/Progressive_medial_axis_2/data).
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Polygon_2_algorithms.h>
+#include <CGAL/intersections.h>
+
+#include <CGAL/Progressive_medial_axis_2/Input_error.h>
+#include <CGAL/Progressive_medial_axis_2/IO/polygon_io.h>
+#include <CGAL/Progressive_medial_axis_2/validate_polygon.h>
+
+#include <chrono>
+#include <clocale>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <functional>
+#include <limits>
+#include <map>
+#include <random>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#ifndef PMA_TEST_DATA
+#  error "PMA_TEST_DATA must name the test data directory"
+#endif
+
+typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
+typedef K::Point_2 Point;
+typedef CGAL::PMA2::Rings<Point> Rings;
+using CGAL::PMA2::Input_error;
+
+// A check that is never compiled out: prints where it failed and makes the enclosing
+// test function return 1.
+#define CHECK(cond)                                                                    \
+  do {                                                                                 \
+    if(!(cond)) {                                                                      \
+      std::fprintf(stderr, "%s:%d: CHECK failed: %s\n", __FILE__, __LINE__, #cond);    \
+      return 1;                                                                        \
+    }                                                                                  \
+  } while(0)
+
+const int ANY = -2; // ring or vertex not checked
+
+// Runs `f`, which must throw an Input_error whose one-line message contains `substring`
+// and whose ring() and vertex() are `ring` and `vertex` (unless ANY).
+bool throws_input_error(const std::function<void()>& f, const std::string& substring,
+                        int ring, int vertex, std::string& diagnostic)
+{
+  try {
+    f();
+  } catch(const Input_error& e) {
+    std::string what = e.what();
+    if(what.find(substring) == std::string::npos)
+      diagnostic = "message \"" + what + "\" does not contain \"" + substring + "\"";
+    else if(what.find('\n') != std::string::npos)
+      diagnostic = "message \"" + what + "\" is not one line";
+    else if(ring != ANY && e.ring() != ring)
+      diagnostic = "message \"" + what + "\": ring() is " + std::to_string(e.ring()) +
+                   ", expected " + std::to_string(ring);
+    else if(vertex != ANY && e.vertex() != vertex)
+      diagnostic = "message \"" + what + "\": vertex() is " + std::to_string(e.vertex()) +
+                   ", expected " + std::to_string(vertex);
+    else
+      return true;
+    return false;
+  } catch(const std::exception& e) {
+    diagnostic = std::string("unexpected exception: ") + e.what();
+    return false;
+  }
+  diagnostic = "no exception thrown, expected \"" + substring + "\"";
+  return false;
+}
+
+#define CHECK_INPUT_ERROR(statement, substring, ring, vertex)                          \
+  do {                                                                                 \
+    std::string diagnostic_;                                                           \
+    if(!throws_input_error([&]() { statement; }, substring, ring, vertex, diagnostic_)) { \
+      std::fprintf(stderr, "%s:%d: CHECK_INPUT_ERROR failed: %s\n  %s\n", __FILE__,    \
+                   __LINE__, #statement, diagnostic_.c_str());                         \
+      return 1;                                                                        \
+    }                                                                                  \
+  } while(0)
+
+#define CHECK_VALID(rings)                                                             \
+  do {                                                                                 \
+    try {                                                                              \
+      CGAL::PMA2::validate_polygon_rings<K>(rings);                                    \
+    } catch(const std::exception& e_) {                                                \
+      std::fprintf(stderr, "%s:%d: %s should be valid: %s\n", __FILE__, __LINE__,      \
+                   #rings, e_.what());                                                 \
+      return 1;                                                                        \
+    }                                                                                  \
+  } while(0)
+
+void validate(const Rings& rings) { CGAL::PMA2::validate_polygon_rings<K>(rings); }
+
+Rings read_wkt(const std::string& text)
+{
+  std::istringstream in(text);
+  return CGAL::PMA2::read_wkt_polygon<Point>(in);
+}
+
+Rings read_geojson(const std::string& text)
+{
+  std::istringstream in(text);
+  return CGAL::PMA2::read_geojson_polygon<Point>(in);
+}
+
+std::string data(const std::string& name) { return std::string(PMA_TEST_DATA) + "/" + name; }
+
+bool same_double(double a, double b) { return std::memcmp(&a, &b, sizeof(double)) == 0; }
+
+bool same_rings(const Rings& a, const Rings& b)
+{
+  if(a.size() != b.size())
+    return false;
+  for(std::size_t r = 0; r < a.size(); ++r) {
+    if(a[r].size() != b[r].size())
+      return false;
+    for(std::size_t i = 0; i < a[r].size(); ++i)
+      if(!same_double(a[r][i].x(), b[r][i].x()) || !same_double(a[r][i].y(), b[r][i].y()))
+        return false;
+  }
+  return true;
+}
+
+double seconds_since(std::chrono::steady_clock::time_point start)
+{
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+std::vector<Point> square(double x0, double y0, double x1, double y1, bool ccw = true)
+{
+  std::vector<Point> s = { Point(x0, y0), Point(x1, y0), Point(x1, y1), Point(x0, y1) };
+  if(!ccw)
+    std::swap(s[1], s[3]);
+  return s;
+}
+
+// ------------------------------------------------------------------ WKT reading
+
+int test_wkt_reading()
+{
+  Rings r = read_wkt("POLYGON ((0 0, 1 0, 1 1, 0 1, 0 0))");
+  CHECK(r.size() == 1 && r[0].size() == 4);
+  CHECK(r[0][1] == Point(1, 0) && r[0][3] == Point(0, 1));
+
+  // Keyword case, white space, newlines, number syntax as strtod, order kept.
+  r = read_wkt("\n  polygon\t(\n( 0 0 ,\r\n+1.5E+00 0,1e0 1 , .5 5. ,0 0 ) ,\n (0.25 0.25,0.5 0.25,0.5 0.5,0.25 0.25))  \n");
+  CHECK(r.size() == 2 && r[0].size() == 4 && r[1].size() == 3);
+  CHECK(r[0][1] == Point(1.5, 0) && r[0][2] == Point(1, 1) && r[0][3] == Point(0.5, 5));
+  CHECK(r[1][0] == Point(0.25, 0.25) && r[1][2] == Point(0.5, 0.5));
+  r = read_wkt("PoLyGoN((0 0,1 0,1 1,0 0))");
+  CHECK(r.size() == 1 && r[0].size() == 3);
+
+  // Clockwise rings are kept as written.
+  r = read_wkt("POLYGON ((0 0, 0 1, 1 1, 1 0, 0 0))");
+  CHECK(r[0][1] == Point(0, 1) && r[0][3] == Point(1, 0));
+
+  // A MULTIPOLYGON holding one polygon; a UTF-8 byte order mark.
+  r = read_wkt("MULTIPOLYGON (((0 0, 4 0, 4 4, 0 0), (1 0.5, 3 0.5, 3 2, 1 0.5)))");
+  CHECK(r.size() == 2 && r[1].size() == 3);
+  r = read_wkt("\xEF\xBB\xBFPOLYGON ((0 0, 1 0, 1 1, 0 0))");
+  CHECK(r.size() == 1);
+
+  // Numbers convert exactly as strtod (in the C locale).
+  r = read_wkt("POLYGON ((0.1 -0, 2.2250738585072014e-308 4.9406564584124654e-324, 1e-400 -1e-400, 0.1 -0))");
+  CHECK(same_double(r[0][0].x(), 0.1) && same_double(r[0][0].y(), -0.0));
+  CHECK(same_double(r[0][1].x(), 2.2250738585072014e-308));
+  CHECK(same_double(r[0][1].y(), std::numeric_limits<double>::denorm_min()));
+  CHECK(same_double(r[0][2].x(), 0.0) && same_double(r[0][2].y(), -0.0));
+  {
+    std::mt19937_64 rng(12345);
+    for(int i = 0; i < 20000; ++i) {
+      std::string token;
+      if(rng() % 2) token += '-';
+      int digits = 1 + static_cast<int>(rng() % 25);
+      for(int d = 0; d < digits; ++d) token += static_cast<char>('0' + rng() % 10);
+      if(rng() % 2) {
+        token += '.';
+        int fraction = static_cast<int>(rng() % 25);
+        for(int d = 0; d < fraction; ++d) token += static_cast<char>('0' + rng() % 10);
+      }
+      if(rng() % 2)
+        token += "e" + std::to_string(static_cast<int>(rng() % 700) - 350);
+      double expected = std::strtod(token.c_str(), nullptr);
+      if(!std::isfinite(expected))
+        continue;
+      Rings q = read_wkt("POLYGON ((" + token + " 0, 1 0, 1 1, " + token + " 0))");
+      if(!same_double(q[0][0].x(), expected)) {
+        std::fprintf(stderr, "number %s read as %.17g, strtod gives %.17g\n", token.c_str(),
+                     q[0][0].x(), expected);
+        CHECK(false);
+      }
+    }
+  }
+
+  // Errors, with line and column.
+  CHECK_INPUT_ERROR(read_wkt("POLYGON ((0 0, 1 0; 1 1, 0 1, 0 0))"),
+                    "malformed WKT at line 1, column 19: expected ',' or ')'", -1, -1);
+  CHECK_INPUT_ERROR(read_wkt("POLYGON ((0 0,\n  1 0,\n  1 1 x, 0 0))"),
+                    "malformed WKT at line 3, column 7: expected ',' or ')'", -1, -1);
+  CHECK_INPUT_ERROR(read_wkt("POLYGON ((0 0, 1 0, 1 1, 0 0)"), "malformed WKT at line 1, column 30", -1, -1);
+  CHECK_INPUT_ERROR(read_wkt("POLYGON ((0 0, 1 0, 1, 0 0))"), "malformed WKT at line 1, column 22", -1, -1);
+  CHECK_INPUT_ERROR(read_wkt("POLYGON ((0 0, 1 0, 1 1, 0 0)) x"), "unexpected text after the polygon", -1, -1);
+  CHECK_INPUT_ERROR(read_wkt("POLYGON (0 0, 1 0, 1 1, 0 0)"), "expected '('", -1, -1);
+  CHECK_INPUT_ERROR(read_wkt("POLYGON (())"), "expected a number", -1, -1);
+  CHECK_INPUT_ERROR(read_wkt(""), "no polygon", -1, -1);
+  CHECK_INPUT_ERROR(read_wkt("   \n"), "no polygon", -1, -1);
+  CHECK_INPUT_ERROR(read_wkt("(0 0, 1 0)"), "malformed WKT at line 1, column 1", -1, -1);
+  CHECK_INPUT_ERROR(read_wkt("POLYGON EMPTY"), "empty polygon", -1, -1);
+  CHECK_INPUT_ERROR(read_wkt("polygon empty"), "empty polygon", -1, -1);
+  CHECK_INPUT_ERROR(read_wkt("MULTIPOLYGON EMPTY"), "empty polygon", -1, -1);
+  CHECK_INPUT_ERROR(read_wkt("POLYGON Z ((0 0 0, 1 0 0, 1 1 0, 0 0 0))"), "only 2D coordinates are supported", ANY, ANY);
+  CHECK_INPUT_ERROR(read_wkt("POLYGON M ((0 0 0, 1 0 0, 1 1 0, 0 0 0))"), "only 2D coordinates are supported", ANY, ANY);
+  CHECK_INPUT_ERROR(read_wkt("POLYGON ZM ((0 0 0 0, 1 0 0 0, 1 1 0 0, 0 0 0 0))"), "only 2D coordinates are supported", ANY, ANY);
+  CHECK_INPUT_ERROR(read_wkt("POLYGON ((0 0, 1 0, 1 1 7, 0 0))"), "only 2D coordinates are supported", 0, 2);
+  CHECK_INPUT_ERROR(read_wkt("LINESTRING (0 0, 1 1)"), "not a polygon: found LINESTRING", -1, -1);
+  CHECK_INPUT_ERROR(read_wkt("point (0 0)"), "not a polygon: found POINT", -1, -1);
+  CHECK_INPUT_ERROR(read_wkt("MULTIPOLYGON (((0 0, 1 0, 1 1, 0 0)), ((2 2, 3 2, 3 3, 2 2)))"),
+                    "not a polygon: found MULTIPOLYGON with more than one polygon", -1, -1);
+  CHECK_INPUT_ERROR(read_wkt("POLYGON ((0 0, 1 0, nan 1, 0 0))"), "non-finite coordinate: ring 0 vertex 2", 0, 2);
+  CHECK_INPUT_ERROR(read_wkt("POLYGON ((0 0, 1 0, 1 1, 0 0), (0 0, 1 0, 1 -inf, 0 0))"),
+                    "non-finite coordinate: ring 1 vertex 2", 1, 2);
+  CHECK_INPUT_ERROR(read_wkt("POLYGON ((0 0, 1 0, 1 Infinity, 0 0))"), "non-finite coordinate: ring 0 vertex 2", 0, 2);
+  CHECK_INPUT_ERROR(read_wkt("POLYGON ((0 0, 1e400 0, 1 1, 0 0))"), "non-finite coordinate: ring 0 vertex 1", 0, 1);
+  CHECK_INPUT_ERROR(read_wkt("POLYGON ((0 0, 1 0, 1 1, 0 1))"),
+                    "unclosed ring: ring 0 (first point (0, 0), last point (0, 1))", 0, -1);
+  CHECK_INPUT_ERROR(read_wkt("POLYGON ((0 0, 4 0, 4 4, 0 0), (1 1, 2 1, 2 2, 1.5 1))"),
+                    "unclosed ring: ring 1 (first point (1, 1), last point (1.5, 1))", 1, -1);
+  CHECK_INPUT_ERROR(read_wkt("POLYGON ((0 0, 1 0, 0 0))"), "ring 0 has fewer than 4 points", 0, -1);
+  CHECK_INPUT_ERROR(read_wkt("POLYGON ((0 0, 4 0, 4 4, 0 0), (1 1))"), "ring 1 has fewer than 4 points", 1, -1);
+  return 0;
+}
+
+// ------------------------------------------------------------------ WKT writing
+
+int test_wkt_writing()
+{
+  Rings rings = { square(0, 0, 1, 1) };
+  std::ostringstream out;
+  CGAL::PMA2::write_wkt_polygon(out, rings);
+  CHECK(out.str() == "POLYGON ((0 0, 1 0, 1 1, 0 1, 0 0))");
+
+  rings.push_back({ Point(0.1, 0.2), Point(0.3, 0.2), Point(0.3, 0.4) });
+  out.str("");
+  CGAL::PMA2::write_wkt_polygon(out, rings);
+  CHECK(out.str() == "POLYGON ((0 0, 1 0, 1 1, 0 1, 0 0), (0.10000000000000001 0.20000000000000001, "
+                     "0.29999999999999999 0.20000000000000001, 0.29999999999999999 0.40000000000000002, "
+                     "0.10000000000000001 0.20000000000000001))");
+  CHECK(same_rings(read_wkt(out.str()), rings));
+
+  out.str("");
+  CGAL::PMA2::write_wkt_polygon(out, Rings());
+  CHECK(out.str() == "POLYGON EMPTY");
+
+  // Bit-exact round trip of random finite doubles, including subnormals and -0.
+  std::mt19937_64 rng(42);
+  Rings random_rings(3);
+  for(auto& ring : random_rings)
+    for(int i = 0; i < 2000; ++i) {
+      double c[2];
+      for(double& v : c) {
+        do {
+          std::uint64_t bits = rng();
+          std::memcpy(&v, &bits, sizeof(double));
+        } while(!std::isfinite(v));
+      }
+      ring.push_back(Point(c[0], c[1]));
+    }
+  random_rings[1][5] = Point(-0.0, std::numeric_limits<double>::denorm_min());
+  random_rings[1][6] = Point(std::numeric_limits<double>::max(), -std::numeric_limits<double>::min());
+  out.str("");
+  CGAL::PMA2::write_wkt_polygon(out, random_rings);
+  CHECK(same_rings(read_wkt(out.str()), random_rings));
+  return 0;
+}
+
+// ------------------------------------------------------------------ GeoJSON
+
+int test_geojson_reading()
+{
+  Rings r = read_geojson(R"({"type": "Polygon", "coordinates": [[[0, 0], [4, 0], [4, 4], [0, 4], [0, 0]],
+                                                           [[1, 1], [1, 2], [2, 2], [2, 1], [1, 1]]]})");
+  CHECK(r.size() == 2 && r[0].size() == 4 && r[1].size() == 4);
+  CHECK(r[1][1] == Point(1, 2));
+
+  // Member order, extra members, escapes in keys, number syntax.
+  r = read_geojson(R"( {"bbox": [0, 0, 1, 1], "coordinates": [ [ [0.1, -0.0], [1E0, 0e5] , [1.5e+0, 1],
+                      [0.1, -0.0] ] ], "crs": {"x": [true, false, null, "s\"\\\/\b\f\n\r\t\u00e9\ud83d\ude00"]},
+                      "typ\u0065": "Polygon"} )");
+  CHECK(r.size() == 1 && r[0].size() == 3);
+  CHECK(same_double(r[0][0].x(), 0.1) && same_double(r[0][0].y(), -0.0));
+  CHECK(r[0][1] == Point(1, 0) && r[0][2] == Point(1.5, 1));
+
+  // Feature, FeatureCollection with one feature, MultiPolygon with one polygon.
+  r = read_geojson(R"({"type": "Feature", "properties": {"name": "a", "n": [1, {"k": 2}]},
+                       "geometry": {"type": "Polygon", "coordinates": [[[0, 0], [1, 0], [1, 1], [0, 0]]]}})");
+  CHECK(r.size() == 1 && r[0].size() == 3);
+  r = read_geojson(R"({"type": "FeatureCollection", "features": [{"type": "Feature", "properties": null,
+                       "geometry": {"type": "Polygon", "coordinates": [[[0, 0], [1, 0], [1, 1], [0, 0]]]}}]})");
+  CHECK(r.size() == 1 && r[0].size() == 3);
+  r = read_geojson(R"({"type": "MultiPolygon", "coordinates": [[[[0, 0], [1, 0], [1, 1], [0, 0]]]]})");
+  CHECK(r.size() == 1 && r[0].size() == 3);
+  r = read_geojson(R"({"type": "Feature", "geometry": {"type": "MultiPolygon", "coordinates": [[[[0, 0], [1, 0], [1, 1], [0, 0]]]]}})");
+  CHECK(r.size() == 1 && r[0].size() == 3);
+
+  // Exact numbers: the WKT writer's output, converted to GeoJSON, reads back bit-exactly.
+  {
+    std::mt19937_64 rng(7);
+    std::uniform_real_distribution<double> u(-1e6, 1e6);
+    Rings ring(1);
+    for(int i = 0; i < 1000; ++i)
+      ring[0].push_back(Point(u(rng), std::ldexp(u(rng), -1040)));
+    std::string text = "{\"type\": \"Polygon\", \"coordinates\": [[";
+    char buf[64];
+    for(std::size_t i = 0; i <= ring[0].size(); ++i) {
+      const Point& p = ring[0][i % ring[0].size()];
+      std::snprintf(buf, sizeof(buf), "%s[%.17g, %.17g]", i ? ", " : "", p.x(), p.y());
+      text += buf;
+    }
+    text += "]]}";
+    CHECK(same_rings(read_geojson(text), ring));
+  }
+
+  // Errors.
+  CHECK_INPUT_ERROR(read_geojson(R"({"type": "Polygon", "coordinates": [[[0, 0], [1, 0] [1, 1], [0, 0]]]})"),
+                    "malformed JSON at line 1, column 53: expected ',' or ']'", -1, -1);
+  CHECK_INPUT_ERROR(read_geojson("{\"type\": \"Polygon\",\n \"coordinates\": [[[0, 0], [1, 0], [1, 1], [0, 0]]]"),
+                    "malformed JSON at line 2, column 51", -1, -1);
+  CHECK_INPUT_ERROR(read_geojson(R"({"type": "Polygon", "coordinates": [[[0, 0], [1, 0], [1, 1], [0, 0]]]} x)"),
+                    "unexpected text after the JSON value", -1, -1);
+  CHECK_INPUT_ERROR(read_geojson(R"({"type": "Polygon", "coordinates": [[[01, 0], [1, 0], [1, 1], [0, 0]]]})"),
+                    "malformed JSON", -1, -1);
+  CHECK_INPUT_ERROR(read_geojson(R"({"type": "Polygon" "coordinates": []})"), "expected ',' or '}'", -1, -1);
+  CHECK_INPUT_ERROR(read_geojson(R"({"type": "Polygon", "coordinates": [[[0, 0], [1, "0"], [1, 1], [0, 0]]]})"),
+                    "malformed GeoJSON at line 1, column 50: expected a number", -1, -1);
+  CHECK_INPUT_ERROR(read_geojson(R"({"type": "Polygon", "coordinates": [[[0, 0], [1], [1, 1], [0, 0]]]})"),
+                    "a position needs 2 coordinates", -1, -1);
+  CHECK_INPUT_ERROR(read_geojson(R"({"coordinates": []})"), "without a \"type\"", -1, -1);
+  CHECK_INPUT_ERROR(read_geojson(R"([1, 2])"), "expected a GeoJSON object", -1, -1);
+  CHECK_INPUT_ERROR(read_geojson(""), "no polygon", -1, -1);
+  CHECK_INPUT_ERROR(read_geojson(R"({"type": "Polygon", "coordinates": []})"), "empty polygon", -1, -1);
+  CHECK_INPUT_ERROR(read_geojson(R"({"type": "MultiPolygon", "coordinates": []})"), "empty polygon", -1, -1);
+  CHECK_INPUT_ERROR(read_geojson(R"({"type": "LineString", "coordinates": [[0, 0], [1, 1]]})"),
+                    "not a polygon: found LineString", -1, -1);
+  CHECK_INPUT_ERROR(read_geojson(R"({"type": "GeometryCollection", "geometries": []})"),
+                    "not a polygon: found GeometryCollection", -1, -1);
+  CHECK_INPUT_ERROR(read_geojson(R"({"type": "Feature", "geometry": {"type": "Point", "coordinates": [0, 0]}})"),
+                    "not a polygon: found Point", -1, -1);
+  CHECK_INPUT_ERROR(read_geojson(R"({"type": "Feature", "geometry": null})"),
+                    "not a polygon: found a Feature without geometry", -1, -1);
+  CHECK_INPUT_ERROR(read_geojson(R"({"type": "FeatureCollection", "features": []})"),
+                    "not a polygon: found FeatureCollection with 0 features", -1, -1);
+  CHECK_INPUT_ERROR(read_geojson(R"({"type": "MultiPolygon", "coordinates": [[[[0, 0], [1, 0], [1, 1], [0, 0]]], [[[2, 2], [3, 2], [3, 3], [2, 2]]]]})"),
+                    "not a polygon: found MultiPolygon with more than one polygon", -1, -1);
+  CHECK_INPUT_ERROR(read_geojson(R"({"type": "Polygon", "coordinates": [[[0, 0, 0], [1, 0, 0], [1, 1, 0], [0, 0, 0]]]})"),
+                    "only 2D coordinates are supported", 0, 0);
+  CHECK_INPUT_ERROR(read_geojson(R"({"type": "Polygon", "coordinates": [[[0, 0], [1, 0], [NaN, 1], [0, 0]]]})"),
+                    "non-finite coordinate: ring 0 vertex 2", 0, 2);
+  CHECK_INPUT_ERROR(read_geojson(R"({"type": "Polygon", "coordinates": [[[0, 0], [1, 0], [1, 1], [0, 0]], [[0, 0], [-Infinity, 0], [1, 1], [0, 0]]]})"),
+                    "non-finite coordinate: ring 1 vertex 1", 1, 1);
+  CHECK_INPUT_ERROR(read_geojson(R"({"type": "Polygon", "coordinates": [[[0, 0], [1, 0], [1, 1e999], [0, 0]]]})"),
+                    "non-finite coordinate: ring 0 vertex 2", 0, 2);
+  CHECK_INPUT_ERROR(read_geojson(R"({"type": "Polygon", "coordinates": [[[0, 0], [1, 0], [1, 1], [0, 1]]]})"),
+                    "unclosed ring: ring 0 (first point (0, 0), last point (0, 1))", 0, -1);
+  CHECK_INPUT_ERROR(read_geojson(R"({"type": "Polygon", "coordinates": [[[0, 0], [1, 0], [0, 0]]]})"),
+                    "ring 0 has fewer than 4 points", 0, -1);
+  return 0;
+}
+
+// ------------------------------------------------------------------ files
+
+struct Invalid_file
+{
+  const char* name;
+  bool geometric; // reads fine, fails validation
+  const char* message;
+  int ring, vertex;
+};
+
+int test_invalid_files()
+{
+  const Invalid_file files[] = {
+    { "malformed.wkt", false, "malformed WKT at line 1, column 19: expected ',' or ')'", -1, -1 },
+    { "empty.wkt", false, "empty polygon", -1, -1 },
+    { "z_coordinates.wkt", false, "only 2D coordinates are supported", ANY, ANY },
+    { "third_coordinate.wkt", false, "only 2D coordinates are supported", 0, 0 },
+    { "not_polygon.wkt", false, "not a polygon: found LINESTRING", -1, -1 },
+    { "multipolygon_two.wkt", false, "not a polygon: found MULTIPOLYGON with more than one polygon", -1, -1 },
+    { "trailing_garbage.wkt", false, "malformed WKT at line 1, column 32: unexpected text after the polygon", -1, -1 },
+    { "non_finite.wkt", false, "non-finite coordinate: ring 0 vertex 2", 0, 2 },
+    { "unclosed.wkt", false, "unclosed ring: ring 0 (first point (0, 0), last point (0, 1))", 0, -1 },
+    { "too_few_points.wkt", false, "ring 0 has fewer than 4 points", 0, -1 },
+    { "too_few_distinct.wkt", true, "ring 0 has fewer than 3 distinct vertices", 0, -1 },
+    { "zero_length_edge.wkt", true, "zero-length edge: ring 0 vertex 2 equals vertex 3", 0, 2 },
+    { "repeated_vertex.wkt", true, "repeated vertex: ring 0 vertex 2 equals ring 0 vertex 5 at (1, 1)", 0, 2 },
+    { "spike.wkt", true, "spike: ring 0 vertex 4 folds back", 0, 4 },
+    { "crossing.wkt", true, "self-intersection: ring 0 edge 0 (vertices 0-1) crosses ring 0 edge 2 (vertices 2-3)", 0, 0 },
+    { "touching.wkt", true, "self-intersection: ring 0 vertex 3 lies on ring 0 edge 0 (vertices 0-1)", 0, 3 },
+    { "overlap.wkt", true, "self-intersection: ring 0 edge 3 (vertices 3-0) overlaps ring 1 edge 2 (vertices 2-0)", 0, 3 },
+    { "hole_outside.wkt", true, "hole 1 (ring 1) is not inside the outer ring", 1, -1 },
+    { "hole_in_hole.wkt", true, "hole 2 (ring 2) lies inside hole 1 (ring 1)", 2, -1 },
+    { "malformed.geojson", false, "malformed JSON at line 1, column 53: expected ',' or ']'", -1, -1 },
+    { "not_polygon.geojson", false, "not a polygon: found LineString", -1, -1 },
+    { "empty.geojson", false, "empty polygon", -1, -1 },
+    { "two_features.geojson", false, "not a polygon: found FeatureCollection with 2 features", -1, -1 },
+    { "feature_without_geometry.geojson", false, "not a polygon: found a Feature without geometry", -1, -1 },
+    { "z_coordinates.geojson", false, "only 2D coordinates are supported", 0, 0 },
+    { "unclosed.geojson", false, "unclosed ring: ring 0 (first point (0, 0), last point (0, 1))", 0, -1 },
+    { "non_finite.geojson", false, "non-finite coordinate: ring 0 vertex 2", 0, 2 },
+    { "crossing.geojson", true, "self-intersection: ring 0 edge 0 (vertices 0-1) crosses ring 0 edge 2 (vertices 2-3)", 0, 0 },
+  };
+  for(const Invalid_file& f : files) {
+    std::string path = data(std::string("invalid/") + f.name);
+    if(f.geometric) {
+      Rings rings;
+      try {
+        rings = CGAL::PMA2::read_polygon_file<Point>(path);
+      } catch(const std::exception& e) {
+        std::fprintf(stderr, "%s should read without error: %s\n", f.name, e.what());
+        CHECK(false);
+      }
+      CHECK_INPUT_ERROR(validate(rings), f.message, f.ring, f.vertex);
+    } else {
+      CHECK_INPUT_ERROR(CGAL::PMA2::read_polygon_file<Point>(path), f.message, f.ring, f.vertex);
+    }
+  }
+
+  // Unreadable files.
+  CHECK_INPUT_ERROR(CGAL::PMA2::read_polygon_file<Point>(data("no_such_file.wkt")),
+                    "cannot read file '" + data("no_such_file.wkt") + "': No such file or directory", -1, -1);
+  CHECK_INPUT_ERROR(CGAL::PMA2::read_polygon_file<Point>(data("invalid")),
+                    "cannot read file '" + data("invalid") + "': ", -1, -1);
+  return 0;
+}
+
+int test_shipped_data()
+{
+  const char* names[] = { "syn_cheese1k.wkt", "syn_comb50.wkt", "syn_maze20.wkt", "syn_ngon64.wkt",
+                          "syn_sliver500.wkt", "syn_spiral20.wkt", "syn_star2k.wkt", "c1m_GBR_0.wkt" };
+  for(const char* name : names) {
+    auto start = std::chrono::steady_clock::now();
+    Rings rings;
+    try {
+      rings = CGAL::PMA2::read_polygon_file<Point>(data(name));
+      validate(rings);
+    } catch(const std::exception& e) {
+      std::fprintf(stderr, "%s should be valid: %s\n", name, e.what());
+      CHECK(false);
+    }
+    std::size_t n = 0;
+    for(const auto& ring : rings)
+      n += ring.size();
+    std::printf("  %-18s %5zu rings %7zu vertices: read + validate %.3f s\n", name, rings.size(), n,
+                seconds_since(start));
+    CHECK(!rings.empty() && rings[0].size() >= 3);
+    if(std::strcmp(name, "syn_cheese1k.wkt") == 0)
+      CHECK(rings.size() == 1001);
+  }
+  return 0;
+}
+
+// ------------------------------------------------------------------ validation
+
+int test_valid_polygons()
+{
+  Rings square_only = { square(0, 0, 4, 4) };
+  CHECK_VALID(square_only);
+  Rings with_hole = { square(0, 0, 4, 4), square(1, 1, 3, 3, false) };
+  CHECK_VALID(with_hole);
+  Rings hole_same_orientation = { square(0, 0, 4, 4), square(1, 1, 3, 3, true) };
+  CHECK_VALID(hole_same_orientation);
+  Rings clockwise = { square(0, 0, 4, 4, false) };
+  CHECK_VALID(clockwise);
+  Rings clockwise_with_holes = { square(0, 0, 10, 10, false), square(1, 1, 2, 2), square(3, 1, 4, 2, false),
+                                 square(1, 3, 9, 9, false) };
+  CHECK_VALID(clockwise_with_holes);
+  Rings triangle = { { Point(0, 0), Point(1, 0), Point(0, 1) } };
+  CHECK_VALID(triangle);
+  // Vertices of angle pi (flat), including at the smallest vertex and on vertical edges.
+  Rings flat = { { Point(0, 0), Point(2, 0), Point(4, 0), Point(4, 2), Point(4, 4), Point(0, 4), Point(0, 2) } };
+  CHECK_VALID(flat);
+  Rings flat_hole = { square(0, 0, 4, 4), { Point(1, 1), Point(1, 2), Point(1, 3), Point(3, 3), Point(2, 2) } };
+  CHECK_VALID(flat_hole);
+  // A hole whose vertex is very close to, but not on, the outer ring.
+  double tiny = std::numeric_limits<double>::denorm_min();
+  Rings close_hole = { square(0, 0, 4, 4), { Point(tiny, 2), Point(1, 1), Point(1, 3) } };
+  CHECK_VALID(close_hole);
+  Rings close_diagonal = { { Point(0, 0), Point(4, 0), Point(0, 4) },
+                           { Point(1, 1), Point(2, std::nextafter(2.0, 0.0)), Point(1, 2) } };
+  CHECK_VALID(close_diagonal);
+  Rings close_diagonal_bad = { { Point(0, 0), Point(4, 0), Point(0, 4) },
+                               { Point(1, 1), Point(2, std::nextafter(2.0, 3.0)), Point(1, 2) } };
+  CHECK_INPUT_ERROR(validate(close_diagonal_bad), "self-intersection: ring 0 edge 1 (vertices 1-2) crosses ring 1 edge", 0, 1);
+  Rings on_diagonal = { { Point(0, 0), Point(4, 0), Point(0, 4) }, { Point(1, 1), Point(2, 2), Point(1, 2) } };
+  CHECK_INPUT_ERROR(validate(on_diagonal), "self-intersection: ring 1 vertex 1 lies on ring 0 edge 1 (vertices 1-2)", 1, 1);
+  // Holes side by side, sharing x or y coordinates, vertical edges aligned.
+  Rings aligned = { square(0, 0, 10, 10), square(1, 1, 2, 2), square(1, 3, 2, 4), square(3, 1, 4, 2),
+                    square(3, 3, 4, 4, false), square(2.5, 1, 2.75, 4) };
+  CHECK_VALID(aligned);
+  // A comb: many vertices sharing coordinates, and a spiral (deep, narrow corridors).
+  Rings comb = read_wkt("POLYGON ((0 0, 9 0, 9 3, 8 3, 8 1, 7 1, 7 3, 6 3, 6 1, 5 1, 5 3, 4 3, 4 1, 3 1, 3 3, 2 3, 2 1, 1 1, 1 3, 0 3, 0 0))");
+  CHECK_VALID(comb);
+  return 0;
+}
+
+int test_invalid_polygons()
+{
+  double nan = std::numeric_limits<double>::quiet_NaN();
+  double inf = std::numeric_limits<double>::infinity();
+
+  CHECK_INPUT_ERROR(validate(Rings()), "empty polygon", -1, -1);
+  CHECK_INPUT_ERROR(validate(Rings{ { Point(0, 0), Point(1, 0) } }), "ring 0 has fewer than 3 distinct vertices", 0, -1);
+  CHECK_INPUT_ERROR(validate(Rings{ square(0, 0, 4, 4), { Point(1, 1), Point(2, 1) } }),
+                    "ring 1 has fewer than 3 distinct vertices", 1, -1);
+  CHECK_INPUT_ERROR(validate(Rings{ square(0, 0, 4, 4), { Point(1, 1), Point(2, 1), Point(1, 1), Point(2, 1) } }),
+                    "ring 1 has fewer than 3 distinct vertices", 1, -1);
+  CHECK_INPUT_ERROR(validate(Rings{ square(0, 0, 4, 4), { Point(1, 1), Point(2, 1), Point(nan, 2) } }),
+                    "non-finite coordinate: ring 1 vertex 2", 1, 2);
+  CHECK_INPUT_ERROR(validate(Rings{ { Point(0, 0), Point(1, -inf), Point(1, 1) } }),
+                    "non-finite coordinate: ring 0 vertex 1", 0, 1);
+
+  // Zero-length edges, including the closing edge.
+  CHECK_INPUT_ERROR(validate(Rings{ { Point(0, 0), Point(4, 0), Point(4, 0), Point(4, 4) } }),
+                    "zero-length edge: ring 0 vertex 1 equals vertex 2", 0, 1);
+  CHECK_INPUT_ERROR(validate(Rings{ square(0, 0, 4, 4), { Point(1, 1), Point(2, 1), Point(2, 2), Point(1, 1) } }),
+                    "zero-length edge: ring 1 vertex 3 equals vertex 0", 1, 3);
+
+  // Repeated vertices: in one ring, between rings (hole touching the outer ring at a
+  // vertex, two holes sharing a vertex).
+  CHECK_INPUT_ERROR(validate(Rings{ { Point(0, 0), Point(4, 0), Point(2, 2), Point(4, 4), Point(0, 4), Point(2, 2) } }),
+                    "repeated vertex: ring 0 vertex 2 equals ring 0 vertex 5 at (2, 2)", 0, 2);
+  CHECK_INPUT_ERROR(validate(Rings{ square(0, 0, 4, 4), { Point(4, 4), Point(2, 3), Point(3, 2) } }),
+                    "repeated vertex: ring 0 vertex 2 equals ring 1 vertex 0 at (4, 4)", 0, 2);
+  CHECK_INPUT_ERROR(validate(Rings{ square(0, 0, 10, 10), square(1, 1, 2, 2), square(2, 2, 3, 3) }),
+                    "repeated vertex: ring 1 vertex 2 equals ring 2 vertex 0 at (2, 2)", 1, 2);
+  CHECK_INPUT_ERROR(validate(Rings{ square(0, 0, 10, 10), { Point(0.1, 0.2), Point(0.3, 0.2), Point(0.3, 0.5) },
+                                    { Point(5, 5), Point(6, 5), Point(0.3, 0.5) } }),
+                    "repeated vertex: ring 1 vertex 2 equals ring 2 vertex 2 at (0.3, 0.5)", 1, 2);
+
+  // Spikes (angle 0), including a degenerate triangle and a spike at the smallest vertex.
+  CHECK_INPUT_ERROR(validate(Rings{ { Point(0, 0), Point(4, 0), Point(4, 4), Point(2, 4), Point(2, 6), Point(2, 5), Point(0, 4) } }),
+                    "spike: ring 0 vertex 4 folds back", 0, 4);
+  CHECK_INPUT_ERROR(validate(Rings{ { Point(0, 0), Point(1, 0), Point(2, 0) } }), "spike: ring 0 vertex 0 folds back", 0, 0);
+  CHECK_INPUT_ERROR(validate(Rings{ square(0, 0, 10, 10), { Point(1, 1), Point(5, 1), Point(3, 1), Point(3, 3) } }),
+                    "spike: ring 1 vertex 1 folds back", 1, 1);
+
+  // Intersections within a ring.
+  CHECK_INPUT_ERROR(validate(Rings{ { Point(0, 0), Point(2, 2), Point(2, 0), Point(0, 2) } }),
+                    "self-intersection: ring 0 edge 0 (vertices 0-1) crosses ring 0 edge 2 (vertices 2-3)", 0, 0);
+  CHECK_INPUT_ERROR(validate(Rings{ { Point(0, 0), Point(4, 0), Point(4, 4), Point(2, 0), Point(0, 4) } }),
+                    "self-intersection: ring 0 vertex 3 lies on ring 0 edge 0 (vertices 0-1)", 0, 3);
+  // Vertical edges crossing a horizontal one, a vertex on a vertical edge.
+  CHECK_INPUT_ERROR(validate(Rings{ { Point(0, 0), Point(0, 4), Point(2, 4), Point(2, 1), Point(-1, 1), Point(-1, 0) } }),
+                    "crosses", 0, ANY);
+  CHECK_INPUT_ERROR(validate(Rings{ { Point(0, 0), Point(4, 0), Point(4, 4), Point(2, 4), Point(4, 2), Point(0, 2) } }),
+                    "self-intersection: ring 0 vertex 4 lies on ring 0 edge 1 (vertices 1-2)", 0, 4);
+  // Collinear overlap of non-consecutive edges of one ring.
+  CHECK_INPUT_ERROR(validate(Rings{ { Point(0, 0), Point(4, 0), Point(4, 2), Point(3, 2), Point(3, 0), Point(1, 0),
+                                      Point(1, -1), Point(0, -1) } }),
+                    "self-intersection", 0, ANY);
+
+  // Intersections between rings.
+  CHECK_INPUT_ERROR(validate(Rings{ square(0, 0, 4, 4), square(3, 1, 5, 3) }),
+                    "self-intersection: ring 0 edge 1 (vertices 1-2) crosses ring 1 edge", 0, 1);
+  CHECK_INPUT_ERROR(validate(Rings{ square(0, 0, 4, 4), { Point(4, 2), Point(2, 1), Point(2, 3) } }),
+                    "self-intersection: ring 1 vertex 0 lies on ring 0 edge 1 (vertices 1-2)", 1, 0);
+  CHECK_INPUT_ERROR(validate(Rings{ square(0, 0, 4, 4), { Point(2, 0), Point(3, 1), Point(1, 1) } }),
+                    "self-intersection: ring 1 vertex 0 lies on ring 0 edge 0 (vertices 0-1)", 1, 0);
+  CHECK_INPUT_ERROR(validate(Rings{ square(0, 0, 4, 4), { Point(1, 0), Point(3, 0), Point(2, 1) } }),
+                    "overlaps", ANY, ANY);
+  CHECK_INPUT_ERROR(validate(Rings{ square(0, 0, 10, 10), square(1, 1, 3, 3), square(2, 2, 4, 4) }),
+                    "self-intersection: ring 1 edge", 1, ANY);
+  CHECK_INPUT_ERROR(validate(Rings{ square(0, 0, 10, 10), square(1, 1, 3, 3), { Point(3, 2), Point(5, 1), Point(5, 3) } }),
+                    "self-intersection: ring 2 vertex 0 lies on ring 1 edge 1 (vertices 1-2)", 2, 0);
+
+  // Nesting.
+  CHECK_INPUT_ERROR(validate(Rings{ square(0, 0, 4, 4), square(5, 5, 6, 6) }),
+                    "hole 1 (ring 1) is not inside the outer ring", 1, -1);
+  CHECK_INPUT_ERROR(validate(Rings{ square(0, 0, 4, 4), square(1, 1, 2, 2), square(-3, 1, -2, 2) }),
+                    "hole 2 (ring 2) is not inside the outer ring", 2, -1);
+  CHECK_INPUT_ERROR(validate(Rings{ square(1, 1, 2, 2), square(0, 0, 4, 4) }),
+                    "hole 1 (ring 1) is not inside the outer ring", 1, -1);
+  CHECK_INPUT_ERROR(validate(Rings{ square(0, 0, 10, 10), square(1, 1, 9, 9), square(2, 2, 3, 3, false) }),
+                    "hole 2 (ring 2) lies inside hole 1 (ring 1)", 2, -1);
+  CHECK_INPUT_ERROR(validate(Rings{ square(0, 0, 10, 10, false), square(4, 4, 5, 5), square(1, 1, 9, 9),
+                                    square(2, 2, 3, 3, false) }),
+                    "hole 1 (ring 1) lies inside hole 2 (ring 2)", 1, -1);
+  // A hole inside a hole inside a hole: the innermost lies inside the middle one.
+  CHECK_INPUT_ERROR(validate(Rings{ square(0, 0, 10, 10), square(1, 1, 9, 9, false), square(3, 3, 4, 4),
+                                    square(2, 2, 8, 8) }),
+                    "hole 2 (ring 2) lies inside hole 3 (ring 3)", 2, -1);
+  return 0;
+}
+
+// ------------------------------------------------------------------ randomized cross-check
+
+// An independent, quadratic validity test built on CGAL's own predicates and
+// constructions (segment intersection, point in polygon).
+bool brute_force_valid(const Rings& rings)
+{
+  if(rings.empty())
+    return false;
+  std::vector<Point> all;
+  for(const auto& ring : rings) {
+    if(ring.size() < 3)
+      return false;
+    all.insert(all.end(), ring.begin(), ring.end());
+  }
+  std::sort(all.begin(), all.end());
+  if(std::adjacent_find(all.begin(), all.end()) != all.end())
+    return false; // repeated vertex (or zero-length edge, or too few distinct vertices)
+  std::vector<K::Segment_2> segments;
+  std::vector<std::pair<std::size_t, std::size_t> > owner;
+  for(std::size_t r = 0; r < rings.size(); ++r)
+    for(std::size_t i = 0; i < rings[r].size(); ++i) {
+      segments.push_back(K::Segment_2(rings[r][i], rings[r][(i + 1) % rings[r].size()]));
+      owner.push_back(std::make_pair(r, i));
+    }
+  for(std::size_t a = 0; a < segments.size(); ++a)
+    for(std::size_t b = a + 1; b < segments.size(); ++b) {
+      if(!CGAL::do_intersect(segments[a], segments[b]))
+        continue;
+      std::size_t n = rings[owner[a].first].size();
+      bool consecutive = owner[a].first == owner[b].first &&
+                         ((owner[a].second + 1) % n == owner[b].second ||
+                          (owner[b].second + 1) % n == owner[a].second);
+      if(!consecutive)
+        return false;
+      // Consecutive edges: they must meet only at their common vertex s.
+      const K::Segment_2& sa = segments[a];
+      const K::Segment_2& sb = segments[b];
+      Point s = (sa.target() == sb.source()) ? sa.target() : sa.source();
+      Point x = (s == sa.target()) ? sa.source() : sa.target();
+      Point y = (s == sb.source()) ? sb.target() : sb.source();
+      if(CGAL::collinear(x, s, y) && !CGAL::collinear_are_ordered_along_line(x, s, y))
+        return false; // a spike
+    }
+  for(std::size_t h = 1; h < rings.size(); ++h) {
+    const Point& p = rings[h][0];
+    if(CGAL::bounded_side_2(rings[0].begin(), rings[0].end(), p, K()) != CGAL::ON_BOUNDED_SIDE)
+      return false;
+    for(std::size_t g = 1; g < rings.size(); ++g)
+      if(g != h && CGAL::bounded_side_2(rings[g].begin(), rings[g].end(), p, K()) == CGAL::ON_BOUNDED_SIDE)
+        return false;
+  }
+  return true;
+}
+
+int test_random_against_brute_force()
+{
+  std::mt19937 rng(2024);
+  auto uniform = [&](int lo, int hi) { return std::uniform_int_distribution<int>(lo, hi)(rng); };
+  int valid = 0, invalid = 0, big_valid = 0, big_invalid = 0;
+  std::map<std::string, int> classes; // error classes seen
+  for(int trial = 0; trial < 80000; ++trial) {
+    Rings rings;
+    int mode = trial % 5;
+    if(mode == 4) {
+      // Squares and triangles of many sizes in a big square: nested and crossing holes.
+      rings.push_back(square(0, 0, 40, 40, uniform(0, 1) == 1));
+      int holes = uniform(1, 4);
+      for(int h = 0; h < holes; ++h) {
+        int s = uniform(1, 20), x = uniform(1, 39 - s), y = uniform(1, 39 - s);
+        if(uniform(0, 2) == 0)
+          rings.push_back({ Point(x, y), Point(x + s, y), Point(x, y + s) });
+        else
+          rings.push_back(square(x, y, x + s, y + s, uniform(0, 1) == 1));
+      }
+    } else if(mode == 0 || mode == 3) {
+      // Fully random rings on a grid: many degeneracies on the small grid, mostly
+      // crossings on the larger one.
+      int nr = uniform(1, 3), size = (mode == 0) ? 5 : 40;
+      for(int r = 0; r < nr; ++r) {
+        rings.emplace_back();
+        int n = uniform(3, mode == 0 ? 6 : 9);
+        for(int i = 0; i < n; ++i)
+          rings.back().push_back(Point(uniform(0, size), uniform(0, size)));
+      }
+    } else {
+      // A star-shaped outer ring and small triangular or square holes; one time in 50,
+      // a larger one (up to 150 vertices and 30 holes).
+      const bool big = (trial % 50 == 1);
+      const int scale = big ? 7 : 1;
+      int n = big ? uniform(20, 150) : uniform(3, 10);
+      std::vector<double> angles;
+      for(int i = 0; i < n; ++i)
+        angles.push_back(std::uniform_real_distribution<double>(0, 6.283185307179586)(rng));
+      std::sort(angles.begin(), angles.end());
+      rings.emplace_back();
+      for(double a : angles) {
+        double radius = uniform(3 * scale, 8 * scale);
+        double x = 10 * scale + radius * std::cos(a), y = 10 * scale + radius * std::sin(a);
+        if(!big) { // rounding makes degeneracies, and may break the star
+          x = std::round(x);
+          y = std::round(y);
+        }
+        rings.back().push_back(Point(x, y));
+      }
+      // The large polygons get holes in distinct cells of a grid inside the star.
+      std::vector<int> cells(81);
+      for(int c = 0; c < 81; ++c)
+        cells[c] = c;
+      std::shuffle(cells.begin(), cells.end(), rng);
+      int holes = big ? uniform(0, 30) : uniform(0, 4);
+      for(int h = 0; h < holes; ++h) {
+        int x = uniform(3 * scale, 16 * scale), y = uniform(3 * scale, 16 * scale);
+        int s = uniform(1, mode == 2 ? 7 : 3);
+        if(big) {
+          x = 52 + 4 * (cells[h] % 9);
+          y = 52 + 4 * (cells[h] / 9);
+        }
+        if(uniform(0, 1))
+          rings.push_back({ Point(x, y), Point(x + s, y), Point(x, y + s) });
+        else
+          rings.push_back(square(x, y, x + s, y + s, uniform(0, 1) == 1));
+      }
+      if(mode == 2 && !rings.back().empty()) // a random vertex moved
+        rings[uniform(0, static_cast<int>(rings.size()) - 1)][0] =
+          Point(uniform(2 * scale, 18 * scale), uniform(2 * scale, 18 * scale));
+    }
+    bool expected = brute_force_valid(rings);
+    bool got = true;
+    std::string message;
+    try {
+      validate(rings);
+    } catch(const Input_error& e) {
+      got = false;
+      message = e.what();
+      std::string kind = message.substr(0, message.find(':'));
+      if(kind.compare(0, 5, "hole ") == 0)
+        kind = (message.find("lies inside") != std::string::npos) ? "hole inside hole" : "hole outside";
+      else if(kind.compare(0, 5, "ring ") == 0)
+        kind = "too few distinct vertices";
+      else if(kind == "self-intersection")
+        kind += (message.find("crosses") != std::string::npos) ? " (crosses)"
+              : (message.find("overlaps") != std::string::npos) ? " (overlaps)" : " (lies on)";
+      ++classes[kind];
+    }
+    if(got != expected) {
+      std::ostringstream wkt;
+      CGAL::PMA2::write_wkt_polygon(wkt, rings);
+      std::fprintf(stderr, "trial %d: validate says %s (%s), brute force says %s for\n  %s\n", trial,
+                   got ? "valid" : "invalid", message.c_str(), expected ? "valid" : "invalid", wkt.str().c_str());
+      CHECK(false);
+    }
+    (expected ? valid : invalid)++;
+    if(trial % 50 == 1)
+      (expected ? big_valid : big_invalid)++;
+  }
+  std::printf("  random polygons: %d valid, %d invalid, all agree with the brute force\n", valid, invalid);
+  std::printf("    (of which larger polygons: %d valid, %d invalid)\n", big_valid, big_invalid);
+  for(const auto& c : classes)
+    std::printf("    %-36s %6d\n", c.first.c_str(), c.second);
+  CHECK(valid > 1000 && invalid > 1000);
+  CHECK(classes.size() == 9); // every class of geometric error but non-finite coordinates
+  return 0;
+}
+
+// ------------------------------------------------------------------ performance
+
+Rings star_polygon(std::size_t n, unsigned seed)
+{
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> radius(0.5, 1.0);
+  Rings rings(1);
+  rings[0].reserve(n);
+  for(std::size_t i = 0; i < n; ++i) {
+    double a = 6.283185307179586 * static_cast<double>(i) / static_cast<double>(n);
+    double r = (i % 2 == 0) ? 1.0 : radius(rng);
+    rings[0].push_back(Point(r * std::cos(a), r * std::sin(a)));
+  }
+  return rings;
+}
+
+int test_performance()
+{
+  {
+    Rings star = star_polygon(100000, 1);
+    auto start = std::chrono::steady_clock::now();
+    CHECK_VALID(star);
+    std::printf("  validate star polygon, 1e5 vertices: %.3f s\n", seconds_since(start));
+  }
+  {
+    Rings grid;
+    grid.push_back(square(0, 0, 201, 201));
+    for(int i = 0; i < 200; ++i)
+      for(int j = 0; j < 200; ++j)
+        grid.push_back(square(i + 1.25, j + 1.25, i + 1.75, j + 1.75, (i + j) % 2 == 0));
+    auto start = std::chrono::steady_clock::now();
+    CHECK_VALID(grid);
+    std::printf("  validate 200x200 grid of square holes (40000 holes, 160004 vertices): %.3f s\n",
+                seconds_since(start));
+    // The same grid with one hole moved into its neighbour.
+    grid[1 + 200 * 100 + 100] = square(101.5, 101.5, 102.5, 102.5);
+    CHECK_INPUT_ERROR(validate(grid), "self-intersection", ANY, ANY);
+  }
+  {
+    Rings star = star_polygon(1000000, 2);
+    std::ostringstream out;
+    CGAL::PMA2::write_wkt_polygon(out, star);
+    std::string text = out.str();
+    auto start = std::chrono::steady_clock::now();
+    Rings back = read_wkt(text);
+    double read_time = seconds_since(start);
+    CHECK(same_rings(back, star));
+    start = std::chrono::steady_clock::now();
+    CHECK_VALID(back);
+    double validate_time = seconds_since(start);
+    std::printf("  star polygon, 1e6 vertices (%.1f MB of WKT): read %.3f s, validate %.3f s\n",
+                static_cast<double>(text.size()) / 1e6, read_time, validate_time);
+  }
+  return 0;
+}
+
+// Random corruptions of valid inputs must give a polygon or an Input_error, nothing else.
+int test_reader_fuzz()
+{
+  const std::string seeds[] = {
+    "POLYGON ((0 0, 4 0, 4 4, 0 4, 0 0), (1 1, 1 2, 2 2, 1 1))",
+    "MULTIPOLYGON (((0.5 -1e3, 4 0, 4 4.25, 0.5 -1e3)))",
+    R"({"type": "FeatureCollection", "features": [{"type": "Feature", "properties": {"a": [1, "x\u00e9"]},
+        "geometry": {"type": "Polygon", "coordinates": [[[0, 0], [4, 0], [4, 4], [0, 0]], [[1, 1], [2, 1], [2, 2], [1, 1]]]}}]})",
+  };
+  const char alphabet[] = "()[]{},:\" -+.eE0123456789 \n\tPOLYGNMZEtruefalsn\\";
+  std::mt19937 rng(99);
+  int parsed = 0, rejected = 0;
+  for(int trial = 0; trial < 30000; ++trial) {
+    std::string text = seeds[trial % 3];
+    int edits = 1 + static_cast<int>(rng() % 4);
+    for(int k = 0; k < edits && !text.empty(); ++k) {
+      std::size_t at = rng() % text.size();
+      switch(rng() % 4) {
+      case 0: text.erase(at, 1 + rng() % 3); break;
+      case 1: text.insert(at, 1, alphabet[rng() % (sizeof(alphabet) - 1)]); break;
+      case 2: text[at] = alphabet[rng() % (sizeof(alphabet) - 1)]; break;
+      default: text.resize(at); break;
+      }
+    }
+    try {
+      Rings r = (trial % 3 == 2) ? read_geojson(text) : read_wkt(text);
+      for(const auto& ring : r)
+        CHECK(ring.size() >= 3);
+      ++parsed;
+      try {
+        validate(r);
+      } catch(const Input_error&) {
+      }
+    } catch(const Input_error& e) {
+      CHECK(std::string(e.what()).find('\n') == std::string::npos);
+      ++rejected;
+    } catch(const std::exception& e) {
+      std::fprintf(stderr, "unexpected exception %s for input\n%s\n", e.what(), text.c_str());
+      CHECK(false);
+    }
+  }
+  std::printf("  corrupted inputs: %d read, %d rejected\n", parsed, rejected);
+  return 0;
+}
+
+// Reading does not depend on the C locale's decimal point.
+int test_locale()
+{
+  const char* names[] = { "de_DE.UTF-8", "de_DE.utf8", "fr_FR.UTF-8", "fr_FR.utf8" };
+  const char* set = nullptr;
+  for(const char* name : names)
+    if((set = std::setlocale(LC_NUMERIC, name)) != nullptr)
+      break;
+  if(set == nullptr) {
+    std::printf("  (no locale with a decimal comma installed: locale test skipped)\n");
+    return 0;
+  }
+  Rings r = read_wkt("POLYGON ((0.5 0, 1.25 0, 1 1.5, 0.5 0))");
+  std::ostringstream out;
+  CGAL::PMA2::write_wkt_polygon(out, r);
+  std::setlocale(LC_NUMERIC, "C");
+  CHECK(r[0][0] == Point(0.5, 0) && r[0][1] == Point(1.25, 0) && r[0][2] == Point(1, 1.5));
+  CHECK(out.str() == "POLYGON ((0.5 0, 1.25 0, 1 1.5, 0.5 0))");
+  return 0;
+}
+
+int main()
+{
+  struct Test { const char* name; int (*run)(); };
+  const Test tests[] = {
+    { "WKT reading", test_wkt_reading },
+    { "WKT writing", test_wkt_writing },
+    { "GeoJSON reading", test_geojson_reading },
+    { "invalid files", test_invalid_files },
+    { "shipped data", test_shipped_data },
+    { "valid polygons", test_valid_polygons },
+    { "invalid polygons", test_invalid_polygons },
+    { "random polygons", test_random_against_brute_force },
+    { "reader fuzz", test_reader_fuzz },
+    { "performance", test_performance },
+    { "locale", test_locale },
+  };
+  int failed = 0;
+  for(const Test& t : tests) {
+    std::printf("%s\n", t.name);
+    std::fflush(stdout);
+    if(t.run() != 0) {
+      std::printf("  FAILED\n");
+      ++failed;
+    }
+    std::fflush(stdout);
+  }
+  std::printf("%d of %zu test groups failed\n", failed, sizeof(tests) / sizeof(tests[0]));
+  return failed == 0 ? 0 : 1;
+}

@@ -1,0 +1,340 @@
+// Tests the medial axis against CGAL's Segment_Delaunay_graph_2 (the test
+// oracle) on random simple polygons, at every progressive step of some of
+// them, and on the shapes shipped in data/; checks the invariants of the
+// axis at every step compared.
+//
+//   test_medial_axis_oracle [--quick] [--only random|steps|data|regressions]
+//                           [--traits filtered|epick|exact] [--seed-base N]
+//
+// On a failure it prints the seed and the polygon as WKT, to be minimised
+// and added to data/regressions/.
+
+#include <CGAL/Progressive_medial_axis_2.h>
+#include <CGAL/Progressive_medial_axis_2/IO/medial_axis_io.h>
+#include <CGAL/Progressive_medial_axis_2/IO/polygon_io.h>
+
+#include <pma_test/sdg_oracle.h>
+#include <pma_test/random_polygons.h>
+#include <pma_test/compare_curves.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <dirent.h>
+#include <iostream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace {
+
+typedef CGAL::Epick::Point_2 Point;
+typedef std::vector<std::vector<Point> > Rings;
+
+int failures = 0;
+
+#define CHECK(cond, msg)                                                             \
+  do {                                                                               \
+    if(!(cond)) {                                                                    \
+      ++failures;                                                                    \
+      std::cerr << __FILE__ << ":" << __LINE__ << ": check failed: " #cond "\n  "    \
+                << msg << "\n";                                                      \
+    }                                                                                \
+  } while(0)
+
+std::string wkt(const Rings& rings)
+{
+  std::ostringstream s;
+  CGAL::PMA2::write_wkt_polygon(s, rings);
+  return s.str();
+}
+
+double distance_to_segment(double px, double py, double ax, double ay, double bx, double by)
+{
+  double dx = bx - ax, dy = by - ay;
+  double t = ((px - ax) * dx + (py - ay) * dy) / (dx * dx + dy * dy);
+  t = (std::max)(0.0, (std::min)(1.0, t));
+  return std::hypot(px - ax - t * dx, py - ay - t * dy);
+}
+
+// Even-odd point in polygon test on the shape's rings (double precision; used
+// only for points well inside).
+bool inside(const std::vector<std::vector<std::pair<double, double> > >& rings, double x, double y)
+{
+  bool in = false;
+  for(const auto& r : rings)
+    for(std::size_t i = 0, j = r.size() - 1; i < r.size(); j = i++) {
+      if((r[i].second > y) != (r[j].second > y) &&
+         x < (r[j].first - r[i].first) * (y - r[i].second) / (r[j].second - r[i].second) + r[i].first)
+        in = !in;
+    }
+  return in;
+}
+
+double boundary_distance(const std::vector<std::vector<std::pair<double, double> > >& rings, double x, double y)
+{
+  double d = 1e300;
+  for(const auto& r : rings)
+    for(std::size_t i = 0, j = r.size() - 1; i < r.size(); j = i++)
+      d = (std::min)(d, distance_to_segment(x, y, r[j].first, r[j].second, r[i].first, r[i].second));
+  return d;
+}
+
+struct Options {
+  bool quick = false;
+  std::string only;
+  std::vector<std::string> skip;   // data shapes not to test
+  std::string traits = "filtered";
+  std::uint64_t seed_base = 0;
+};
+
+template <class Traits>
+class Checker
+{
+public:
+  typedef CGAL::Progressive_medial_axis_2<Traits> PMA;
+  typedef typename PMA::Medial_axis MA;
+  typedef CGAL::PMA2::Generator_names<MA> Names;
+
+  // Compares the current axis of `pma` with the oracle and checks the
+  // invariants.  `input_names`: name generators by the input (full shape).
+  bool compare(const PMA& pma, bool input_names, const std::string& what, const Rings& input)
+  {
+    const MA& ma = pma.medial_axis();
+    Names names(ma, input_names ? Names::INPUT : Names::SHAPE);
+    Names shape_names(ma, Names::SHAPE);
+    Rings shape;
+    std::vector<std::vector<std::pair<double, double> > > shape_xy;
+    for(const auto& r : shape_names.rings()) {
+      shape.emplace_back();
+      shape_xy.emplace_back();
+      for(int i : r) {
+        auto p = MA::to_xy(ma.points()[i]);
+        shape.back().push_back(Point(p.first, p.second));
+        shape_xy.back().push_back(p);
+      }
+    }
+    const Rings& oracle_rings = input_names ? input : shape;
+    pma_test::Oracle_result oracle = pma_test::sdg_medial_axis(oracle_rings);
+    std::vector<pma_test::Oracle_curve> ours;
+    for(const auto& c : CGAL::PMA2::named_curves(ma, names))
+      ours.push_back(pma_test::Oracle_curve{c.a, c.b, c.length});
+    pma_test::Curve_diff diff = pma_test::compare_curves(ours, oracle.curves, oracle.bbox_diagonal);
+    const int before = failures;
+    CHECK(diff.ok(), what << " step " << pma.current_step() << ": pairs differ from the oracle (ours | oracle)\n"
+                          << diff.report() << "  shape: " << wkt(oracle_rings));
+    check_invariants(pma, what, shape_xy, oracle.bbox_diagonal, int(shape.size()) - 1);
+    ++comparisons;
+    return failures == before;
+  }
+
+  void check_invariants(const PMA& pma, const std::string& what,
+                        const std::vector<std::vector<std::pair<double, double> > >& shape,
+                        double diagonal, int holes)
+  {
+    const MA& ma = pma.medial_axis();
+    const auto& hds = ma.halfedge_structure();
+    // The medial axis is connected and has one independent cycle per hole.
+    std::size_t nv = 0, ne = 0;
+    std::vector<int> parent(hds.vertex_capacity());
+    for(std::size_t i = 0; i < parent.size(); ++i) parent[i] = int(i);
+    auto find = [&](int x) {
+      while(parent[x] != x) x = parent[x] = parent[parent[x]];
+      return x;
+    };
+    int components = 0;
+    for(const auto& v : ma.vertices()) { ++nv; (void)v; }
+    for(const auto& e : ma.edges()) {
+      ++ne;
+      int a = find(e.source().index()), b = find(e.target().index());
+      if(a != b) parent[a] = b;
+    }
+    for(const auto& v : ma.vertices())
+      if(find(v.index()) == v.index()) ++components;
+    CHECK(components == 1, what << " step " << pma.current_step() << ": the axis has " << components << " components");
+    CHECK(long(ne) - long(nv) + 1 == holes,
+          what << " step " << pma.current_step() << ": the axis has " << (long(ne) - long(nv) + 1)
+               << " independent cycles, the shape " << holes << " holes");
+
+    // Branch points are equidistant from their generators.
+    for(const auto& v : ma.vertices()) {
+      if(v.kind() != MA::BRANCH_POINT) continue;
+      auto p = MA::to_xy(v.point());
+      double r = CGAL::to_double(v.radius());
+      double scale = (std::max)(std::fabs(p.first), std::fabs(p.second));
+      double tol = 1e-9 * r + 64 * scale * 2.220446049250313e-16;
+      for(const auto& g : v.generators()) {
+        auto a = MA::to_xy(g.source()), b = MA::to_xy(g.target());
+        double d = g.is_point() ? std::hypot(p.first - a.first, p.second - a.second)
+                                : distance_to_segment(p.first, p.second, a.first, a.second, b.first, b.second);
+        CHECK(std::fabs(d - r) <= tol, what << " step " << pma.current_step() << ": branch point (" << p.first << ", "
+                                             << p.second << ") r=" << r << " is at distance " << d << " of "
+                                             << g.id());
+      }
+    }
+    // Every curve lies inside the shape: vertices inside or on the boundary,
+    // interior samples strictly inside.
+    for(const auto& e : ma.edges()) {
+      auto pl = e.polyline(1e-3 * diagonal);
+      for(std::size_t i = 0; i < pl.size(); ++i) {
+        double x = pl[i].first, y = pl[i].second;
+        double bd = boundary_distance(shape, x, y);
+        bool ok = bd <= 1e-9 * diagonal || inside(shape, x, y);
+        CHECK(ok, what << " step " << pma.current_step() << ": curve " << e.first_generator().id() << "/"
+                       << e.second_generator().id() << " leaves the shape at (" << x << ", " << y << ")");
+        if(!ok) break;
+      }
+    }
+  }
+
+  std::size_t comparisons = 0;
+};
+
+template <class Traits>
+bool run_polygon(Checker<Traits>& checker, const Rings& rings, const std::string& what, bool every_step,
+                 std::vector<std::size_t> steps = {})
+{
+  typedef CGAL::Progressive_medial_axis_2<Traits> PMA;
+  typename PMA::Rings converted;
+  for(const auto& r : rings) {
+    converted.emplace_back();
+    for(const Point& p : r) converted.back().push_back(typename PMA::Point_2(p.x(), p.y()));
+  }
+  PMA pma(converted);
+  const int before = failures;
+  if(every_step) {
+    do {
+      if(!checker.compare(pma, false, what, rings)) break;
+    } while(pma.refine());
+  } else {
+    for(std::size_t s : steps) {
+      if(s >= pma.number_of_steps()) continue;
+      pma.refine_to(s);
+      if(!checker.compare(pma, false, what, rings)) break;
+    }
+  }
+  pma.refine_all();
+  if(failures == before)
+    checker.compare(pma, true, what, rings);
+  CHECK(pma.statistics().anomalies == 0 || !Traits::Has_exact_decisions,
+        what << ": " << pma.statistics().anomalies << " forced events with exact decisions");
+  return failures == before;
+}
+
+Rings reversed_if(const Rings& r, bool rev)
+{
+  Rings out = r;
+  if(rev)
+    for(auto& ring : out) std::reverse(ring.begin(), ring.end());
+  return out;
+}
+
+template <class Traits>
+void random_tests(Checker<Traits>& checker, const Options& o)
+{
+  const int per_kind = o.quick ? 40 : 400;
+  const int step_polygons = o.quick ? 4 : 12;
+  int done = 0;
+  for(int kind = 0; kind < 3; ++kind) {
+    for(int i = 0; i < per_kind; ++i) {
+      std::uint64_t seed = o.seed_base + std::uint64_t(kind) * 1000003u + std::uint64_t(i);
+      int n = 3 + int((seed * 2654435761u) % 298);
+      Rings rings(1);
+      std::string name;
+      switch(kind) {
+      case 0: rings[0] = pma_test::random_star_polygon(seed, n); name = "star"; break;
+      case 1: rings[0] = pma_test::random_walk_polygon(seed, (std::max)(n, 4)); name = "walk"; break;
+      default: rings[0] = pma_test::random_rectilinear_polygon(seed, 1 + n / 3, (i % 2) == 1); name = "rectilinear"; break;
+      }
+      rings = reversed_if(rings, i % 5 == 4);
+      std::string what = name + " seed " + std::to_string(seed) + " (" + std::to_string(rings[0].size()) + " vertices)";
+      bool every = i < step_polygons;
+      if(!run_polygon(checker, rings, what, every, {1, rings[0].size() / 3, rings[0].size() / 2})) {
+        std::cerr << "  failing polygon: " << wkt(rings) << "\n";
+        if(failures > 20) return;
+      }
+      ++done;
+    }
+  }
+  std::cout << "random: " << done << " polygons\n";
+}
+
+std::vector<std::string> list_wkt(const std::string& dir)
+{
+  std::vector<std::string> files;
+  if(DIR* d = opendir(dir.c_str())) {
+    while(dirent* e = readdir(d)) {
+      std::string n = e->d_name;
+      if(n.size() > 4 && n.substr(n.size() - 4) == ".wkt") files.push_back(dir + "/" + n);
+    }
+    closedir(d);
+  }
+  std::sort(files.begin(), files.end());
+  return files;
+}
+
+template <class Traits>
+void data_tests(Checker<Traits>& checker, const Options& o)
+{
+  const std::string dir = PMA_TEST_DATA;
+  for(const std::string& name : {"syn_comb50", "syn_maze20", "syn_spiral20", "syn_ngon64", "syn_star2k",
+                                 "syn_sliver500", "c1m_GBR_0"}) {
+    if(o.quick && std::string(name) == "c1m_GBR_0") continue;
+    if(std::find(o.skip.begin(), o.skip.end(), name) != o.skip.end()) {
+      std::cout << "data: " << name << " skipped\n";
+      continue;
+    }
+    Rings rings = CGAL::PMA2::read_polygon_file<Point>(dir + "/" + name + ".wkt");
+    std::size_t n = rings[0].size();
+    auto start = std::chrono::steady_clock::now();
+    run_polygon(checker, rings, name, false, {1, 7, n / 10, n / 3, (2 * n) / 3});
+    std::cout << "data: " << name << " ("
+              << std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() << " s)\n";
+  }
+}
+
+template <class Traits>
+void regression_tests(Checker<Traits>& checker, const Options&)
+{
+  std::size_t count = 0;
+  for(const std::string& f : list_wkt(std::string(PMA_TEST_DATA) + "/regressions")) {
+    Rings rings = CGAL::PMA2::read_polygon_file<Point>(f);
+    run_polygon(checker, rings, f, true);
+    ++count;
+  }
+  std::cout << "regressions: " << count << " shapes, every step\n";
+}
+
+template <class Traits>
+int run_all(const Options& o)
+{
+  Checker<Traits> checker;
+  auto start = std::chrono::steady_clock::now();
+  if(o.only.empty() || o.only == "regressions") regression_tests(checker, o);
+  if(o.only.empty() || o.only == "random") random_tests(checker, o);
+  if(o.only.empty() || o.only == "data") data_tests(checker, o);
+  std::cout << checker.comparisons << " comparisons with the oracle, " << failures << " failures, "
+            << std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() << " s\n";
+  return failures == 0 ? 0 : 1;
+}
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+  Options o;
+  for(int i = 1; i < argc; ++i) {
+    std::string a = argv[i];
+    if(a == "--quick") o.quick = true;
+    else if(a == "--only" && i + 1 < argc) o.only = argv[++i];
+    else if(a == "--traits" && i + 1 < argc) o.traits = argv[++i];
+    else if(a == "--seed-base" && i + 1 < argc) o.seed_base = std::strtoull(argv[++i], nullptr, 10);
+    else if(a == "--skip" && i + 1 < argc) o.skip.push_back(argv[++i]);
+    else { std::cerr << "unknown argument " << a << "\n"; return 2; }
+  }
+  if(o.traits == "epick") return run_all<CGAL::Progressive_medial_axis_traits_2<CGAL::Epick> >(o);
+  if(o.traits == "exact") return run_all<CGAL::Progressive_medial_axis_traits_2<CGAL::Simple_cartesian<CORE::Expr> > >(o);
+  return run_all<CGAL::Progressive_medial_axis_filtered_traits_2<> >(o);
+}
