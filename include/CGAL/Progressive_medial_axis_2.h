@@ -10,6 +10,7 @@
 #include <CGAL/Progressive_medial_axis_2/validate_polygon.h>
 #include <CGAL/Progressive_medial_axis_2/internal/Merge.h>
 #include <CGAL/Progressive_medial_axis_2/internal/Triangulate.h>
+#include <CGAL/Progressive_medial_axis_2/internal/Growth_order.h>
 
 #include <CGAL/Polygon_2.h>
 #include <CGAL/Polygon_with_holes_2.h>
@@ -31,6 +32,7 @@ struct Progressive_medial_axis_statistics {
   std::size_t input_vertices = 0;
   std::size_t holes = 0;
   std::size_t triangles = 0;
+  std::size_t merges = 0;          ///< merges done (one per shared edge of each triangle added)
   double validation_seconds = 0;
   double triangulation_seconds = 0;
   double merge_seconds = 0;       ///< total time spent in refinement steps
@@ -111,8 +113,10 @@ public:
   Progressive_medial_axis_2(const Progressive_medial_axis_2&) = delete;
   Progressive_medial_axis_2& operator=(const Progressive_medial_axis_2&) = delete;
 
-  /// Number of refinement steps (merges) of the whole computation.
-  std::size_t number_of_steps() const { return order_.empty() ? 0 : order_.size() - 1; }
+  /// Number of refinement steps of the whole computation.  A step merges
+  /// one triangle, or a few when one alone would make the shape touch itself
+  /// at a vertex (see the user manual).
+  std::size_t number_of_steps() const { return steps_.empty() ? 0 : steps_.size() - 1; }
   /// Steps done so far (0 right after construction).
   std::size_t current_step() const { return step_; }
   bool is_complete() const { return step_ == number_of_steps(); }
@@ -131,21 +135,33 @@ public:
       return false;
     auto start = std::chrono::steady_clock::now();
     ++step_;
-    const int t = order_[step_];
-    const int et = via_edge_[step_];
-    const PMA2::internal::Triangle& T = triangles_[t];
-    const int p = T.nbr[et];
-    int ep = 0;
-    while(triangles_[p].nbr[ep] != t) ++ep;
-    build_triangle(t);
-    PMA2::internal::Merge_statistics ms = merger_->merge(tri_he_[3 * p + ep], tri_he_[3 * t + et]);
-    stats_.switches += ms.switches;
-    stats_.vanishings += ms.vanishings;
-    stats_.anomalies += ms.anomalies;
-    if(ms.max_queue > stats_.max_queue) stats_.max_queue = ms.max_queue;
-    stats_.queue_per_step.push_back(std::uint32_t(ms.max_queue));
+    std::size_t step_queue = 0;
+    for(int t : steps_[step_]) {
+      const PMA2::internal::Triangle& T = triangles_[t];
+      // the edges it shares with the grown shape: merge along the first one,
+      // then along the others, whose two sides are then in the same shape
+      int shared[3], ns = 0;
+      for(int e = 0; e < 3; ++e)
+        if(T.nbr[e] >= 0 && added_[T.nbr[e]]) shared[ns++] = e;
+      CGAL_assertion(ns > 0);
+      build_triangle(t, shared[0]);
+      added_[t] = 1;
+      for(int k = 0; k < ns; ++k) {
+        const int e = shared[k], u = T.nbr[e];
+        int eu = 0;
+        while(triangles_[u].nbr[eu] != t) ++eu;
+        PMA2::internal::Merge_statistics ms = merger_->merge(tri_he_[3 * u + eu], tri_he_[3 * t + e]);
+        stats_.switches += ms.switches;
+        stats_.vanishings += ms.vanishings;
+        stats_.anomalies += ms.anomalies;
+        ++stats_.merges;
+        step_queue = (std::max)(step_queue, ms.max_queue);
+      }
+    }
+    if(step_queue > stats_.max_queue) stats_.max_queue = step_queue;
+    stats_.queue_per_step.push_back(std::uint32_t(step_queue));
     stats_.merge_seconds += seconds_since(start);
-    visitor.on_step(step_, ms.max_queue);
+    visitor.on_step(step_, step_queue);
     return true;
   }
 
@@ -175,7 +191,7 @@ public:
   Medial_axis release_medial_axis()
   {
     merger_.reset();
-    order_.clear();
+    steps_.clear();
     step_ = 0;
     return std::move(axis_);
   }
@@ -215,8 +231,6 @@ private:
   {
     auto t0 = std::chrono::steady_clock::now();
     PMA2::validate_polygon_rings<Kernel>(rings);
-    if(rings.size() > 1)
-      throw PMA2::Input_error("polygons with holes are not supported yet (ring 1 is a hole)", 1, -1);
     stats_.validation_seconds = seconds_since(t0);
 
     // Points, with their ring, index and successor along the ring with the
@@ -255,26 +269,26 @@ private:
     t0 = std::chrono::steady_clock::now();
     triangles_ = PMA2::internal::triangulate_rings(axis_.points_, ring_start);
     stats_.triangles = triangles_.size();
-    breadth_first_order();
+    steps_ = PMA2::internal::Growth_order(triangles_, n, largest_triangle()).steps();
     stats_.triangulation_seconds = seconds_since(t0);
 
-    point_vertex_.assign(n, PMA2::internal::NO_INDEX);
+    added_.assign(triangles_.size(), 0);
     tri_he_.assign(3 * triangles_.size(), PMA2::internal::NO_INDEX);
     axis_.hds_.reserve(2 * n + 16, 4 * n + 16);
     merger_.reset(new PMA2::internal::Medial_merge<Traits>(axis_.hds_, axis_.points_, traits_));
     step_ = 0;
     auto t1 = std::chrono::steady_clock::now();
-    build_triangle(order_[0]);
+    build_triangle(steps_[0][0], -1);
+    added_[steps_[0][0]] = 1;
     stats_.merge_seconds = seconds_since(t1);
   }
 
-  // Breadth-first order of the triangles from the largest one.
-  void breadth_first_order()
+  // The triangle of largest area: the start of the growth.
+  int largest_triangle() const
   {
-    const std::size_t nt = triangles_.size();
     int start = 0;
     double best = -1;
-    for(std::size_t t = 0; t < nt; ++t) {
+    for(std::size_t t = 0; t < triangles_.size(); ++t) {
       const PMA2::internal::Triangle& T = triangles_[t];
       std::pair<double, double> a = Medial_axis::to_xy(axis_.points_[T.v[0]]);
       std::pair<double, double> b = Medial_axis::to_xy(axis_.points_[T.v[1]]);
@@ -282,45 +296,32 @@ private:
       double area = (b.first - a.first) * (c.second - a.second) - (b.second - a.second) * (c.first - a.first);
       if(area > best) { best = area; start = int(t); }
     }
-    order_.clear();
-    via_edge_.clear();
-    std::vector<char> seen(nt, 0);
-    std::deque<int> queue;
-    queue.push_back(start);
-    seen[start] = 1;
-    order_.push_back(start);
-    via_edge_.push_back(-1);
-    while(!queue.empty()) {
-      int t = queue.front();
-      queue.pop_front();
-      for(int e = 0; e < 3; ++e) {
-        int u = triangles_[t].nbr[e];
-        if(u < 0 || seen[u]) continue;
-        seen[u] = 1;
-        int eu = 0;
-        while(triangles_[u].nbr[eu] != t) ++eu;
-        order_.push_back(u);
-        via_edge_.push_back(eu);
-        queue.push_back(u);
-      }
-    }
-    CGAL_assertion(order_.size() == nt);
+    return start;
   }
 
-  int vertex_of_point(int i)
-  {
-    if(point_vertex_[i] == PMA2::internal::NO_INDEX)
-      point_vertex_[i] = axis_.hds_.new_vertex(axis_.points_[i], FT(0), i);
-    return point_vertex_[i];
-  }
-
-  // The medial axis of one triangle: three bisectors meeting at the incentre.
-  void build_triangle(int t)
+  // The medial axis of one triangle: three bisectors meeting at the
+  // incentre.  Each corner is a vertex of its own, except the two ends of the
+  // edge `attach` (-1 for none), which are the corners of the grown shape
+  // across that edge: the triangle is merged along it next.
+  void build_triangle(int t, int attach)
   {
     Hds& hds = axis_.hds_;
     const PMA2::internal::Triangle& T = triangles_[t];
     const int i0 = T.v[0], i1 = T.v[1], i2 = T.v[2];
-    const int V0 = vertex_of_point(i0), V1 = vertex_of_point(i1), V2 = vertex_of_point(i2);
+    int V[3];
+    for(int i = 0; i < 3; ++i) V[i] = PMA2::internal::NO_INDEX;
+    if(attach >= 0) {
+      // the shape's half-edge across the edge runs from v[attach+2] to v[attach+1]
+      const int u = T.nbr[attach];
+      int eu = 0;
+      while(triangles_[u].nbr[eu] != t) ++eu;
+      const int h = tri_he_[3 * u + eu];
+      V[(attach + 1) % 3] = hds.target(h);
+      V[(attach + 2) % 3] = hds.source(h);
+    }
+    for(int i = 0; i < 3; ++i)
+      if(V[i] == PMA2::internal::NO_INDEX) V[i] = hds.new_vertex(axis_.points_[T.v[i]], FT(0), T.v[i]);
+    const int V0 = V[0], V1 = V[1], V2 = V[2];
     const int Fa = hds.new_face(false, i0, i1);   // edge 2 of the triangle
     const int Fb = hds.new_face(false, i1, i2);   // edge 0
     const int Fc = hds.new_face(false, i2, i0);   // edge 1
@@ -367,9 +368,9 @@ private:
   Medial_axis axis_;
   std::unique_ptr<PMA2::internal::Medial_merge<Traits> > merger_;
   std::vector<PMA2::internal::Triangle> triangles_;
-  std::vector<int> order_, via_edge_;
-  std::vector<int> point_vertex_;
-  std::vector<int> tri_he_;
+  std::vector<std::vector<int> > steps_;   // triangles added by each step
+  std::vector<char> added_;
+  std::vector<int> tri_he_;                // boundary half-edge of each triangle edge
   std::size_t step_ = 0;
   Progressive_medial_axis_statistics stats_;
 };

@@ -6,3 +6,14 @@ add_test(NAME oracle_filtered COMMAND test_medial_axis_oracle)
 add_test(NAME oracle_epick COMMAND test_medial_axis_oracle --traits epick --quick --skip syn_sliver500)
 add_test(NAME oracle_exact COMMAND test_medial_axis_oracle --traits exact --quick --only random)
 set_tests_properties(oracle_filtered oracle_epick oracle_exact PROPERTIES TIMEOUT 1800)
+
+# The command-line tool's contract, against the oracle program sdg_pairs
+# (defined in oracle.cmake).
+if(TARGET sdg_pairs)
+  pma_add_test_program(test_tool)
+  add_test(NAME tool COMMAND test_tool $<TARGET_FILE:progressive_medial_axis> $<TARGET_FILE:sdg_pairs> ${PMA_TEST_DATA})
+  set_tests_properties(tool PROPERTIES TIMEOUT 600)
+endif()
+
+# compare_pairs SHAPE OURS ORACLE: used by scripts/check_oracle.sh.
+pma_add_test_program(compare_pairs)

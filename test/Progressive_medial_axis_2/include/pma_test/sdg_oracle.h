@@ -14,10 +14,12 @@
 //    endpoint, edges involving a non-reflex vertex, and edges outside the polygon are
 //    dropped. Two distinct Voronoi edges between the same generators are two curves.
 //
-// Every decision is combinatorial, taken from the SDG (whose predicates are exact:
-// interval filter, then Gmpq) and from exact orientation tests on the input; nothing is
-// decided from a constructed coordinate, and CORE::Expr is not used at all (CGAL 5.5's CORE
-// was seen to return a wrong sign on an exactly-zero difference, on syn_sliver500).
+// Inside/outside is decided combinatorially, from the SDG (whose predicates are exact:
+// interval filter, then Gmpq) and from exact orientation tests on the input; nothing there
+// is decided from a constructed coordinate. CORE::Expr is used only to confirm that two
+// Voronoi vertices are equal, in its plain exact mode: CGAL 5.5's CORE, with its default
+// progressive evaluation, was seen to return a wrong sign for an exactly-zero difference
+// (a vertex of syn_sliver500), and the same expression gets the right sign without it.
 //
 // Inside / outside. Every finite Delaunay face (Voronoi vertex) is classified as
 //  * BOUNDARY (radius 0): its three sites contain a common point, i.e. they are a polygon
@@ -43,9 +45,14 @@
 //    common vertex is convex" (both checked; std::logic_error means an oracle bug).
 //  * edges dual to a Delaunay edge with an infinite face are unbounded, hence outside.
 //
-// Coincident Voronoi vertices (cocircular sites) are merged when the Delaunay edge between
-// the two faces is degenerate by the SDG's exact predicate is_degenerate_edge; all faces of
-// one empty circle are connected through such edges. A curve between merged faces has
+// Coincident Voronoi vertices (cocircular sites) are merged: all faces of one empty circle
+// are connected through Delaunay edges, and two adjacent inside faces are merged when their
+// vertices are equal: their 512-bit values agree to 2^-400 relative, CORE::Expr (exact mode)
+// finds them equal, and their 2048-bit values agree to 2^-1800 (any disagreement among
+// these, or with the SDG's is_degenerate_edge when it says "degenerate", throws). The SDG's
+// is_degenerate_edge alone is not enough: it follows symbolic conventions when a segment's
+// endpoint is another site of the circle (a flat vertex with its two edges, say) and then
+// calls two faces with the same vertex "not degenerate". A curve between merged faces has
 // length 0.
 //
 // Numbers. Coordinates and radii of inside vertices come from CGAL's Voronoi vertex
@@ -67,6 +74,7 @@
 #ifndef PMA_TEST_SDG_ORACLE_H
 #define PMA_TEST_SDG_ORACLE_H
 
+#include <CGAL/CORE_Expr.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Gmpfr.h>
 #include <CGAL/Segment_Delaunay_graph_2.h>
@@ -136,7 +144,8 @@ struct Oracle_edge
 struct Oracle_stats
 {
   std::size_t sdg_vertices = 0, sdg_faces = 0, inside_faces = 0, constructions = 0,
-              degenerate_edge_tests = 0, propagated_faces = 0;
+              coincidence_candidates = 0, exact_coincidence_tests = 0, coincident_pairs = 0,
+              propagated_faces = 0;
   double seconds_sdg = 0, seconds_classify = 0, seconds_total = 0;
 };
 
@@ -172,6 +181,13 @@ typedef CGAL::Segment_Delaunay_graph_traits_without_intersections_2<
   MK, CGAL::Field_with_sqrt_tag> MGt;
 typedef MGt::Site_2 MSite;
 
+typedef CORE::Expr XT;
+typedef CGAL::Simple_cartesian<XT> XK;
+typedef XK::Point_2 XPoint;
+typedef CGAL::Segment_Delaunay_graph_traits_without_intersections_2<
+  XK, CGAL::Field_with_sqrt_tag> XGt;
+typedef XGt::Site_2 XSite;
+
 enum Face_class { OUTSIDE = -1, BOUNDARY = 0, INSIDE = 1, UNKNOWN = 2 };
 
 /// Sets MPFR's default precision (used by every Gmpfr operation) and restores it.
@@ -187,6 +203,27 @@ public:
 
 private:
   MT::Precision_type old_;
+};
+
+/// Puts CORE in its plain exact mode (no floating-point filter, no progressive
+/// evaluation: CGAL 5.5's CORE was seen to return a wrong sign with progressive evaluation)
+/// and restores the previous mode.
+class Core_exact_mode_guard
+{
+public:
+  Core_exact_mode_guard()
+    : filter_(CORE::setFpFilterFlag(false)), progressive_(CORE::setProgressiveEvalFlag(false))
+  {}
+  ~Core_exact_mode_guard()
+  {
+    CORE::setFpFilterFlag(filter_);
+    CORE::setProgressiveEvalFlag(progressive_);
+  }
+  Core_exact_mode_guard(const Core_exact_mode_guard&) = delete;
+  Core_exact_mode_guard& operator=(const Core_exact_mode_guard&) = delete;
+
+private:
+  bool filter_, progressive_;
 };
 
 inline double nearest_double(const MT& v) { return mpfr_get_d(v.fr(), MPFR_RNDN); }
@@ -631,15 +668,44 @@ private:
     return cr * cr / l2;
   }
 
+  // the Voronoi vertex of face f by CGAL's construction, in MPFR at the current default
+  // precision
+  MPoint mvertex(int f)
+  {
+    const Face_info& F = faces[f];
+    MGt gt;
+    ++stats.constructions;
+    return gt.construct_svd_vertex_2_object()(msite(F.site[0]), msite(F.site[1]), msite(F.site[2]));
+  }
+
+  XPoint xpoint(int g) const { return XPoint(XT(P.pts[g].x()), XT(P.pts[g].y())); }
+
+  XSite xsite(int s) const
+  {
+    const Site_info& S = sites[s];
+    if(S.is_point) return XSite::construct_site_2(xpoint(S.g));
+    return XSite::construct_site_2(xpoint(S.src), xpoint(S.tgt));
+  }
+
+  // the Voronoi vertex of face f by CGAL's construction, in CORE::Expr
+  XPoint xvertex(int f) const
+  {
+    const Face_info& F = faces[f];
+    XGt gt;
+    return gt.construct_svd_vertex_2_object()(xsite(F.site[0]), xsite(F.site[1]), xsite(F.site[2]));
+  }
+
+  double scale_of(int f) const
+  {
+    return (std::max)({P.max_abs_coordinate, std::abs(faces[f].cx), std::abs(faces[f].cy), 1e-300});
+  }
+
   // construct and verify the Voronoi vertex of face f; returns false if verification fails
   bool construct(int f, long bits, double& cx, double& cy, double& r, std::string& why)
   {
     Mpfr_precision_guard guard(bits);
     const Face_info& F = faces[f];
-    MGt gt;
-    ++stats.constructions;
-    const MPoint c = gt.construct_svd_vertex_2_object()(msite(F.site[0]), msite(F.site[1]),
-                                                        msite(F.site[2]));
+    const MPoint c = mvertex(f);
     // verification: equal distances to the three closed sites...
     MT d2[3];
     for(int k = 0; k < 3; ++k) d2[k] = squared_distance_to_site(F.site[k], c);
@@ -700,6 +766,45 @@ private:
     return f;
   }
 
+  // Are the exact Voronoi vertices of the inside faces f and g equal? Equal iff their
+  // 512-bit values agree to 2^-400 relative AND CORE::Expr in exact mode finds them equal
+  // AND their 2048-bit values agree to 2^-1800; any disagreement among these, or with the
+  // SDG's is_degenerate_edge when that says "degenerate", throws std::logic_error.
+  // (is_degenerate_edge alone is not enough: it applies symbolic conventions when an
+  // endpoint of a segment site is one of the other sites, and then says "not degenerate"
+  // for two faces with the same vertex.)
+  bool same_vertex(int f, int g, bool sdg_degenerate)
+  {
+    const std::string what = "sdg_oracle: coincidence of the Voronoi vertices of " +
+                             sites[faces[f].site[0]].id + " " + sites[faces[f].site[1]].id + " " +
+                             sites[faces[f].site[2]].id + " and " + sites[faces[g].site[0]].id +
+                             " " + sites[faces[g].site[1]].id + " " + sites[faces[g].site[2]].id;
+    const double scale = (std::max)(scale_of(f), scale_of(g));
+    auto agree = [&](long bits, int exponent) {
+      Mpfr_precision_guard guard(bits);
+      const MPoint a = mvertex(f), b = mvertex(g);
+      const MT tol(std::ldexp(scale, -exponent));
+      return CGAL::compare(CGAL::abs(a.x() - b.x()), tol) <= 0 &&
+             CGAL::compare(CGAL::abs(a.y() - b.y()), tol) <= 0;
+    };
+    if(!agree(512, 400)) {
+      if(sdg_degenerate) throw std::logic_error(what + ": SDG says equal, MPFR says different");
+      return false;
+    }
+    bool equal;
+    {
+      Core_exact_mode_guard core_mode;
+      const XPoint a = xvertex(f), b = xvertex(g);
+      equal = (a.x() == b.x()) && (a.y() == b.y());
+    }
+    ++stats.exact_coincidence_tests;
+    if(!equal)
+      throw std::logic_error(what + ": equal to 2^-400 relative but CORE says different");
+    if(!agree(2048, 1800))
+      throw std::logic_error(what + ": CORE says equal, 2048-bit MPFR says different");
+    return true;
+  }
+
   void merge_coincident_faces()
   {
     uf_parent.resize(faces.size());
@@ -710,20 +815,22 @@ private:
       const int g = face_index(e->first->neighbor(e->second));
       if(f < 0 || g < 0) continue;
       if(faces[f].cls != INSIDE || faces[g].cls != INSIDE) continue;
-      // exact vertices agree to ~2^-400 relative; rounded ones farther apart than this are
-      // certainly different (skip the exact predicate)
-      const double tol = 1e-9 * ((std::max)({std::abs(faces[f].cx), std::abs(faces[f].cy),
-                                             faces[f].r, P.bbox_diagonal}));
-      if(std::abs(faces[f].cx - faces[g].cx) > tol || std::abs(faces[f].cy - faces[g].cy) > tol)
-        continue;
-      ++stats.degenerate_edge_tests;
       // the SDG's exact predicate (as in its protected is_degenerate_edge(Face_handle, int))
       const SDG::Face_handle fh = e->first;
       const int i = e->second;
       const SDG::Vertex_handle mirror = sdg.data_structure().mirror_vertex(fh, i);
-      if(sdg.geom_traits().is_degenerate_edge_2_object()(
-           fh->vertex(SDG::ccw(i))->site(), fh->vertex(SDG::cw(i))->site(), fh->vertex(i)->site(),
-           mirror->site())) {
+      const bool sdg_degenerate = sdg.geom_traits().is_degenerate_edge_2_object()(
+        fh->vertex(SDG::ccw(i))->site(), fh->vertex(SDG::cw(i))->site(), fh->vertex(i)->site(),
+        mirror->site());
+      // the correctly rounded vertices of two equal vertices are equal; farther apart than
+      // this, the vertices certainly differ
+      const double tol = 1e-9 * (std::max)(scale_of(f), scale_of(g));
+      if(!sdg_degenerate &&
+         (std::abs(faces[f].cx - faces[g].cx) > tol || std::abs(faces[f].cy - faces[g].cy) > tol))
+        continue;
+      ++stats.coincidence_candidates;
+      if(same_vertex(f, g, sdg_degenerate)) {
+        ++stats.coincident_pairs;
         const int rf = find(f), rg = find(g);
         if(rf != rg) uf_parent[rf] = rg;
       }

@@ -1,0 +1,88 @@
+/*!
+\ingroup PkgProgressiveMedialAxis2Concepts
+\cgalConcept
+
+The concept `ProgressiveMedialAxisTraits_2` holds every numeric decision and
+construction of the topology-oriented merge of `CGAL::Progressive_medial_axis_2`.
+The merge itself is purely topological: it asks the traits only
+
+- for the orientation of three input points (the corners of the merged shape),
+- for the position along a separator of its events (switch and vanishing
+  critical points) and for their order,
+- for the disk tangent to three generators (the branch points).
+
+A *site* is a generator: a point (a reflex vertex of the polygon), or an
+open segment with the shape on its left.  A *separator* is a segment
+`line` from `P` to `Q`; its event times are positions along it, with `P` at
+time 0.  The time of a vanishing point of the site `b` between `a` and `d`
+is where the separator's retracting tip meets the disk tangent to `a, b, d`;
+the time of a switch point is the foot on the separator of a vertex of the
+cell of one of its sides.
+
+Whatever the number type, the merge keeps a valid topology; with exact
+decisions (`Has_exact_decisions`), the topology is that of the exact medial
+axis.
+
+\cgalHasModel `CGAL::Progressive_medial_axis_traits_2<K>`
+\cgalHasModel `CGAL::Progressive_medial_axis_filtered_traits_2<CK,EK>`
+*/
+class ProgressiveMedialAxisTraits_2 {
+public:
+  /// \name Types
+  /// @{
+
+  /// A model of `Kernel` (its `Point_2` and `Orientation_2` are used).
+  typedef unspecified_type Kernel;
+  /// Number type of the radii of constructed disks.
+  typedef unspecified_type FT;
+  /// Type of input points and of constructed branch points.
+  typedef unspecified_type Point_2;
+  /// A generator: `Site_2::point(p)` or `Site_2::segment(p, q)`, with
+  /// members `is_point`, `p`, `q` and equality.
+  typedef unspecified_type Site_2;
+  /// The position of an event along a separator; copyable.
+  typedef unspecified_type Event_time_2;
+  /// `Orientation operator()(Point_2 p, Point_2 q, Point_2 r)`, exact on input points.
+  typedef unspecified_type Orientation_2;
+
+  /// A function object: `Event_time_2 operator()(Site_2 line)`, the time of the source of the separator.
+  typedef unspecified_type Compute_start_time_2;
+  /// A function object: `Event_time_2 operator()(Site_2 line)`, the time of the target of the separator.
+  typedef unspecified_type Compute_end_time_2;
+  /// A function object: `Event_time_2 operator()(Site_2 line, Site_2 c, Site_2 a, Site_2 b, Point_2 fallback)`:
+  /// the time along `line` of the foot of the disk tangent to `c, a, b` (in
+  /// counter-clockwise order around its centre), where `c` is `line` or its
+  /// reverse; `fallback` is the stored vertex, for when the disk cannot be rebuilt.
+  typedef unspecified_type Compute_switch_time_2;
+  /// A function object: `bool operator()(Site_2 line, Site_2 a, Site_2 b, Site_2 d, Event_time_2& t)`:
+  /// the vanishing time of `b`; false if the disk tangent to `a, b, d` in
+  /// counter-clockwise order does not exist, does not touch the segments
+  /// themselves, or misses the line.
+  typedef unspecified_type Compute_vanishing_time_2;
+  /// A function object: `Comparison_result operator()(Event_time_2, Event_time_2)`; a total order.
+  typedef unspecified_type Compare_event_time_2;
+  /// A function object: `bool operator()(Event_time_2 t, Event_time_2 now, Site_2 line)`:
+  /// whether an event at `t` is already in the past at time `now`.
+  typedef unspecified_type Is_event_in_past_2;
+  /// A function object: `bool operator()(Site_2 a, Site_2 b, Site_2 c, Point_2& centre, FT& radius)`:
+  /// the disk tangent to three sites whose cells meet at its centre in this
+  /// counter-clockwise order; false if there is none.
+  typedef unspecified_type Construct_medial_disk_2;
+
+  /// @}
+
+  /// Whether the event decisions are exact.
+  static constexpr bool Has_exact_decisions = unspecified;
+
+  /// \name Access to the function objects
+  /// @{
+  Orientation_2 orientation_2_object() const;
+  Compute_start_time_2 compute_start_time_2_object() const;
+  Compute_end_time_2 compute_end_time_2_object() const;
+  Compute_switch_time_2 compute_switch_time_2_object() const;
+  Compute_vanishing_time_2 compute_vanishing_time_2_object() const;
+  Compare_event_time_2 compare_event_time_2_object() const;
+  Is_event_in_past_2 is_event_in_past_2_object() const;
+  Construct_medial_disk_2 construct_medial_disk_2_object() const;
+  /// @}
+};

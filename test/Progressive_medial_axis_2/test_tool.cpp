@@ -1,0 +1,216 @@
+// Tests the command-line tool progressive_medial_axis as other programs use
+// it: exit statuses and one-line errors on bad input and usage, --pairs
+// against the oracle program sdg_pairs at several --step values (on the
+// shape written by --shape-out), and the other outputs.
+//
+//   test_tool TOOL SDG_PAIRS
+
+#include <pma_test/compare_curves.h>
+
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace {
+
+int failures = 0;
+std::string tool, sdg_pairs, tmp;
+
+#define CHECK(cond, msg)                                                                          \
+  do {                                                                                            \
+    if(!(cond)) {                                                                                 \
+      ++failures;                                                                                 \
+      std::cerr << __FILE__ << ":" << __LINE__ << ": check failed: " #cond "\n  " << msg << "\n"; \
+    }                                                                                             \
+  } while(0)
+
+std::string slurp(const std::string& path)
+{
+  std::ifstream f(path);
+  std::stringstream s;
+  s << f.rdbuf();
+  return s.str();
+}
+
+struct Result {
+  int status;
+  std::string out, err;
+};
+
+// Runs a command line (arguments already quoted as needed).
+Result run(const std::string& args)
+{
+  std::string cmd = args + " > " + tmp + "/out.txt 2> " + tmp + "/err.txt";
+  int rc = std::system(cmd.c_str());
+  Result r;
+  r.status = WIFEXITED(rc) ? WEXITSTATUS(rc) : -1;
+  r.out = slurp(tmp + "/out.txt");
+  r.err = slurp(tmp + "/err.txt");
+  return r;
+}
+
+std::size_t count_lines(const std::string& s)
+{
+  std::size_t n = 0;
+  for(char c : s) n += (c == '\n');
+  return n;
+}
+
+void check_bad_input(const std::string& file, const std::string& fragment)
+{
+  Result r = run(tool + " --pairs " + file);
+  CHECK(r.status == 2, file << ": exit status " << r.status << ", expected 2");
+  CHECK(count_lines(r.err) == 1, file << ": error is not one line: " << r.err);
+  CHECK(r.err.find(fragment) != std::string::npos, file << ": error '" << r.err << "' lacks '" << fragment << "'");
+  CHECK(r.out.empty(), file << ": printed output despite the error");
+}
+
+void bad_inputs(const std::string& data)
+{
+  const std::string dir = data + "/invalid/";
+  const char* cases[][2] = {
+    {"malformed.wkt", "malformed WKT at line 1"},
+    {"empty.wkt", "empty polygon"},
+    {"not_polygon.wkt", "not a polygon"},
+    {"non_finite.wkt", "non-finite coordinate: ring 0 vertex 2"},
+    {"unclosed.wkt", "unclosed ring: ring 0"},
+    {"too_few_distinct.wkt", "fewer than 3 distinct vertices"},
+    {"zero_length_edge.wkt", "zero-length edge: ring 0 vertex 2"},
+    {"repeated_vertex.wkt", "repeated vertex: ring 0 vertex 2"},
+    {"spike.wkt", "spike: ring 0 vertex 4"},
+    {"crossing.wkt", "self-intersection: ring 0 edge 0"},
+    {"touching.wkt", "self-intersection: ring 0 vertex 3"},
+    {"hole_outside.wkt", "hole 1 (ring 1) is not inside the outer ring"},
+    {"malformed.geojson", "malformed JSON"},
+  };
+  for(const auto& c : cases) check_bad_input(dir + c[0], c[1]);
+  check_bad_input(dir + "no_such_file.wkt", "cannot read file");
+}
+
+void usage_errors(const std::string& data)
+{
+  const std::string shape = data + "/syn_comb50.wkt";
+  for(const std::string& args : {std::string(""), std::string("--no-such-option ") + shape,
+                                 std::string("--step abc ") + shape, std::string("--step -3 ") + shape,
+                                 std::string("--frames 5 ") + shape, std::string("--traits foo ") + shape,
+                                 shape + " " + shape}) {
+    Result r = run(tool + " " + args);
+    CHECK(r.status == 2, "'" << args << "': exit status " << r.status << ", expected 2");
+    CHECK(!r.err.empty(), "'" << args << "': no message");
+  }
+  Result h = run(tool + " --help");
+  CHECK(h.status == 0 && h.out.find("--pairs") != std::string::npos, "--help");
+}
+
+// --pairs at --step K against the oracle on the shape of step K.
+void pairs_against_oracle(const std::string& file, const std::vector<long>& steps)
+{
+  for(long k : steps) {
+    std::string shape = tmp + "/shape.wkt";
+    std::string args = tool + " --pairs " + (k >= 0 ? "--step " + std::to_string(k) + " --shape-out " + shape + " " : "") + file;
+    Result ours = run(args);
+    CHECK(ours.status == 0, args << ": exit status " << ours.status << ": " << ours.err);
+    Result theirs = run(sdg_pairs + " " + (k >= 0 ? shape : file));
+    CHECK(theirs.status == 0, "sdg_pairs: " << theirs.err);
+    std::istringstream a(ours.out), b(theirs.out);
+    std::vector<pma_test::Oracle_curve> ca = pma_test::parse_pairs(a), cb = pma_test::parse_pairs(b);
+    // bounding-box diagonal of the shape compared
+    std::string wkt = slurp(k >= 0 ? shape : file);
+    double x0 = 1e300, y0 = 1e300, x1 = -1e300, y1 = -1e300;
+    {
+      std::string t;
+      for(char c : wkt) t += (c == '(' || c == ')' || c == ',') ? ' ' : c;
+      std::istringstream s(t);
+      std::string word;
+      s >> word;   // POLYGON
+      double x, y;
+      while(s >> x >> y) {
+        x0 = std::min(x0, x); x1 = std::max(x1, x);
+        y0 = std::min(y0, y); y1 = std::max(y1, y);
+      }
+    }
+    pma_test::Curve_diff d = pma_test::compare_curves(ca, cb, std::hypot(x1 - x0, y1 - y0));
+    CHECK(!ca.empty() && d.ok(), file << " step " << k << ": --pairs differs from sdg_pairs (tool | oracle)\n" << d.report());
+  }
+}
+
+void outputs(const std::string& data)
+{
+  const std::string shape = data + "/syn_spiral20.wkt";
+  Result r = run(tool + " --branches --stats --svg " + tmp + "/a.svg --geojson " + tmp + "/a.geojson --wkt-out " +
+                 tmp + "/a.wkt --frames 3 --frames-prefix " + tmp + "/frame " + shape);
+  CHECK(r.status == 0, "outputs: " << r.err);
+  std::istringstream lines(r.out);
+  std::string line;
+  std::size_t branches = 0;
+  bool stats = false;
+  while(std::getline(lines, line)) {
+    std::istringstream w(line);
+    std::string head;
+    w >> head;
+    if(head == "branch") {
+      std::vector<std::string> f;
+      std::string x;
+      while(w >> x) f.push_back(x);
+      CHECK(f.size() >= 6, "branch line with fewer than 3 generators: " << line);
+      ++branches;
+    }
+    if(head == "max_n_v") stats = true;
+  }
+  CHECK(branches > 0, "no branch lines");
+  CHECK(stats, "--stats has no max_n_v line");
+  CHECK(slurp(tmp + "/a.svg").find("<svg") == 0, "SVG");
+  CHECK(slurp(tmp + "/a.geojson").find("{\"type\":\"FeatureCollection\"") == 0, "GeoJSON");
+  CHECK(slurp(tmp + "/a.wkt").find("MULTILINESTRING (") == 0, "WKT axis");
+  for(const char* f : {"/frame_000.svg", "/frame_001.svg", "/frame_002.svg"})
+    CHECK(slurp(tmp + f).find("<svg") == 0, "frame " << f);
+
+  // GeoJSON input gives the same pairs as WKT input
+  {
+    std::ofstream g(tmp + "/square.geojson");
+    g << "{\"type\":\"Polygon\",\"coordinates\":[[[0,0],[2,0],[2,1],[0,1],[0,0]]]}";
+  }
+  {
+    std::ofstream w(tmp + "/square.wkt");
+    w << "POLYGON ((0 0, 2 0, 2 1, 0 1, 0 0))";
+  }
+  Result g = run(tool + " --pairs " + tmp + "/square.geojson");
+  Result w = run(tool + " --pairs " + tmp + "/square.wkt");
+  CHECK(g.status == 0 && g.out == w.out && !g.out.empty(), "GeoJSON input");
+}
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+  if(argc != 4) {
+    std::cerr << "usage: test_tool TOOL SDG_PAIRS DATA_DIR\n";
+    return 2;
+  }
+  tool = argv[1];
+  sdg_pairs = argv[2];
+  const std::string data = argv[3];
+  char dir[] = "/tmp/pma_test_tool_XXXXXX";
+  if(!mkdtemp(dir)) return 2;
+  tmp = dir;
+
+  bad_inputs(data);
+  usage_errors(data);
+  pairs_against_oracle(data + "/syn_comb50.wkt", {-1, 0, 1, 17, 100, 150});
+  pairs_against_oracle(data + "/syn_maze20.wkt", {-1, 3, 120, 400});
+  pairs_against_oracle(data + "/syn_spiral20.wkt", {-1, 50});
+  outputs(data);
+
+  std::system((std::string("rm -rf ") + tmp).c_str());
+  std::cout << "test_tool: " << failures << " failures\n";
+  return failures == 0 ? 0 : 1;
+}
