@@ -4,7 +4,8 @@
 //   bench_time [--runs N] [--timeout SECONDS] [--methods m1,m2,...] FILE.wkt...
 //
 // Methods:
-//   pma_filtered      our full progressive sequence, filtered traits (exact decisions)
+//   pma_filtered      our full progressive sequence, filtered traits (exact decisions),
+//                     then the coordinates of every vertex of the final axis
 //   pma_epick         the same with the double-precision traits
 //   sdg               Segment_Delaunay_graph_2, filtered traits without intersections
 //                     over Simple_cartesian<double> (construction of the diagram)
@@ -63,7 +64,11 @@ double run_pma(const Rings& rings, std::string& note)
   double t0 = now();
   PMA pma(r);
   pma.refine_all();
+  // coordinates are computed on first use: read them all
+  double checksum = 0;
+  for(const auto& v : pma.medial_axis().vertices()) checksum += CGAL::to_double(v.radius());
   double t = now() - t0;
+  if(!(checksum >= 0)) note = "bad radius";
   const auto& s = pma.statistics();
   std::map<std::uint32_t, std::size_t> hist;
   for(std::uint32_t v : s.queue_per_step) ++hist[v];

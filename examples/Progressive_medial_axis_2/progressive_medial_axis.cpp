@@ -120,10 +120,10 @@ template <class CK, class EK>
 void print_filter_statistics(const CGAL::Progressive_medial_axis_filtered_traits_2<CK, EK>&)
 {
   const auto& f = CGAL::Progressive_medial_axis_filtered_traits_2<CK, EK>::filter_statistics();
-  std::printf("filter_interval_evaluations %zu\nfilter_mpfr_evaluations %zu\nfilter_exact_evaluations %zu\n"
-              "filter_mpfr_comparisons %zu\nfilter_exact_comparisons %zu\n",
-              f.interval_evaluations, f.mpfr_evaluations, f.exact_evaluations, f.mpfr_comparisons,
-              f.exact_comparisons);
+  std::printf("filter_interval_evaluations %zu\nfilter_double_double_evaluations %zu\nfilter_mpfr_evaluations %zu\n"
+              "filter_exact_evaluations %zu\nfilter_mpfr_comparisons %zu\nfilter_exact_comparisons %zu\n",
+              f.interval_evaluations, f.double_double_evaluations, f.mpfr_evaluations, f.exact_evaluations,
+              f.mpfr_comparisons, f.exact_comparisons);
 }
 
 template <class Traits>

@@ -325,17 +325,7 @@ private:
     const int Fa = hds.new_face(false, i0, i1);   // edge 2 of the triangle
     const int Fb = hds.new_face(false, i1, i2);   // edge 0
     const int Fc = hds.new_face(false, i2, i0);   // edge 1
-    Point_2 centre;
-    FT radius;
-    typedef typename Traits::Site_2 Site_2;
-    const std::vector<Point_2>& P = axis_.points_;
-    if(!traits_.construct_medial_disk_2_object()(Site_2::segment(P[i0], P[i1]), Site_2::segment(P[i1], P[i2]),
-                                                  Site_2::segment(P[i2], P[i0]), centre, radius)) {
-      ++stats_.anomalies;
-      centre = P[i0];
-      radius = FT(0);
-    }
-    const int VI = hds.new_vertex(centre, radius);
+    const int VI = hds.new_pending_vertex(Fa, Fb, Fc);   // the incentre
     const int ba = hds.new_edge(Fa, PMA2::internal::OUTSIDE);
     const int bb = hds.new_edge(Fb, PMA2::internal::OUTSIDE);
     const int bc = hds.new_edge(Fc, PMA2::internal::OUTSIDE);

@@ -6,6 +6,7 @@
 
 #include <CGAL/Progressive_medial_axis_2/internal/Medial_constructions.h>
 #include <CGAL/Progressive_medial_axis_2/internal/Mpfr_interval.h>
+#include <CGAL/Progressive_medial_axis_2/internal/Double_double.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Simple_cartesian.h>
@@ -125,6 +126,35 @@ bool evaluate_time(Time_kind kind, const Site_& c, const Site_* s, const Triple_
   return chord_far_end(px, py, qx, qy, circle, t);
 }
 
+/// CORE::Expr's progressive evaluation has been seen to give a wrong sign for
+/// an expression that is exactly zero (CGAL 5.5; the package's test oracle
+/// has a reproducer).  The filtered traits reach CORE only for exact ties,
+/// where this matters, and switch it off for the duration of those
+/// evaluations (it is far too slow to switch off for every evaluation of the
+/// all-CORE model).  The flag is global to CORE: do not run such exact
+/// evaluations concurrently with other code that changes it.
+class Core_exact_scope
+{
+public:
+  Core_exact_scope() : old_(CORE::setProgressiveEvalFlag(false)) {}
+  ~Core_exact_scope() { CORE::setProgressiveEvalFlag(old_); }
+  Core_exact_scope(const Core_exact_scope&) = delete;
+  Core_exact_scope& operator=(const Core_exact_scope&) = delete;
+
+private:
+  bool old_;
+};
+
+/// The scope for a number type: only CORE::Expr needs one.
+template <class NT>
+struct Exact_scope_for {
+  struct Type {};
+};
+template <>
+struct Exact_scope_for<CORE::Expr> {
+  typedef Core_exact_scope Type;
+};
+
 struct Identity_convert {
   template <class T> const T& operator()(const T& x) const { return x; }
 };
@@ -147,7 +177,11 @@ construction and every decision of the merge is computed in `K::FT`.
   decisions are made in floating point; predicates on input points are exact.
   This is the fastest model and the one of the paper's implementation.
 - With `Exact_predicates_exact_constructions_kernel_with_sqrt`
-  (`Simple_cartesian<CORE::Expr>`) every decision and construction is exact.
+  (`Simple_cartesian<CORE::Expr>`) every decision and construction is made
+  by `CORE::Expr`, with its default (progressive) evaluation.  CGAL 5.5's
+  CORE has been seen to misjudge the sign of an expression that is exactly
+  zero in that mode; the filtered model, which takes its rare exact decisions
+  with progressive evaluation off, is the more reliable exact choice.
 
 \cgalModels `ProgressiveMedialAxisTraits_2`
 */
@@ -210,22 +244,25 @@ public:
   /// Time, along the separator `line` (from its source P to its target Q),
   /// of the foot of the disk tangent to `c, a, b` in counter-clockwise
   /// order, where `c` is one side of the separator (`line` or its reverse):
-  /// a vertex of the cell of `c`.  `fallback` is the stored vertex, used if
-  /// the disk cannot be rebuilt from its generators.
+  /// a vertex of the cell of `c`.  False if the disk cannot be built.
   struct Compute_switch_time_2 {
-    Event_time_2 operator()(const Site_2& line, const Site_2& c, const Site_2& a, const Site_2& b,
-                            const Point_2& fallback) const
+    bool operator()(const Site_2& line, const Site_2& c, const Site_2& a, const Site_2& b,
+                    Event_time_2& t) const
     {
       Site_2 s[3] = {c, a, b};
       PMA2::internal::Triple_relations rel = PMA2::internal::triple_relations<Kernel>(s);
-      FT t;
-      if(PMA2::internal::evaluate_time<FT>(PMA2::internal::switch_time_kind(line, a, b), line, s, rel,
-                                           PMA2::internal::Identity_convert(), t))
-        return t;
-      return (line.q.x() - line.p.x()) * (fallback.x() - line.p.x()) +
-             (line.q.y() - line.p.y()) * (fallback.y() - line.p.y());
+      return PMA2::internal::evaluate_time<FT>(PMA2::internal::switch_time_kind(line, a, b), line, s, rel,
+                                               PMA2::internal::Identity_convert(), t);
     }
   };
+  /// Time, along the separator `line`, of the foot of the point `p`.
+  struct Compute_foot_time_2 {
+    Event_time_2 operator()(const Site_2& line, const Point_2& p) const
+    {
+      return (line.q.x() - line.p.x()) * (p.x() - line.p.x()) + (line.q.y() - line.p.y()) * (p.y() - line.p.y());
+    }
+  };
+  Compute_foot_time_2 compute_foot_time_2_object() const { return Compute_foot_time_2(); }
   Compute_switch_time_2 compute_switch_time_2_object() const { return Compute_switch_time_2(); }
 
   /// Time at which the tip retracting along `c` meets the disk tangent to
@@ -258,7 +295,7 @@ public:
     bool operator()(const Event_time_2& t, const Event_time_2& now, const Site_2& c) const
     {
       if constexpr(Has_exact_decisions) {
-        return CGAL::compare(t, now) == SMALLER;
+          return CGAL::compare(t, now) == SMALLER;
       } else {
         FT scale = Compute_end_time_2()(c);
         return t < now - FT(1e-12) * scale;
@@ -278,10 +315,13 @@ interval arithmetic at 256 and at 2048 bits, and only then exactly with the
 number type of `EK` (default `CORE::Expr`), which in practice happens only
 for exact ties of degenerate inputs.
 
-Constructed vertices are taken from the double intervals when these are
-tight (within about 1e-13 of the coordinates' magnitude), otherwise from the
-MPFR intervals once both ends round to the same double (the exact point
-correctly rounded), otherwise from the exact value rounded to double.
+Constructed vertices: the double intervals decide the branches of the
+construction (which of two tangent circles, ...); the disk is then computed
+in double-double arithmetic (about 106 bits) and rounded to double, which
+gives the exact disk correctly rounded in all but ill-conditioned cases.
+When the intervals cannot decide a branch, MPFR intervals are used until
+both ends round to the same double (the exact point correctly rounded), or
+else the exact value is rounded to double.
 Points are those of `CK` (double coordinates).
 
 \cgalModels `ProgressiveMedialAxisTraits_2`
@@ -306,6 +346,7 @@ public:
   /// the thread).
   struct Filter_statistics {
     std::size_t interval_evaluations = 0;  ///< times and disks evaluated in double intervals
+    std::size_t double_double_evaluations = 0; ///< disks constructed in double-double arithmetic
     std::size_t mpfr_evaluations = 0;      ///< ... that needed MPFR intervals
     std::size_t exact_evaluations = 0;     ///< ... that needed the exact number type
     std::size_t mpfr_comparisons = 0;      ///< comparisons of times decided by MPFR intervals
@@ -336,6 +377,7 @@ public:
     const Exact_FT& exact() const
     {
       if(!exact_) {
+        typename PMA2::internal::Exact_scope_for<Exact_FT>::Type scope;
         ++filter_statistics().exact_evaluations;
         Exact_FT t(0);
         PMA2::internal::To_nt_convert<Exact_FT> cv;
@@ -400,6 +442,7 @@ private:
       }
     }
     ++filter_statistics().exact_evaluations;
+    typename PMA2::internal::Exact_scope_for<Exact_FT>::Type scope;
     Exact_FT e(0);
     PMA2::internal::To_nt_convert<Exact_FT> cv;
     if(!PMA2::internal::evaluate_time<Exact_FT>(kind, c, t.s_, t.rel_, cv, e))
@@ -430,22 +473,28 @@ public:
   Compute_end_time_2 compute_end_time_2_object() const { return Compute_end_time_2(); }
 
   struct Compute_switch_time_2 {
-    Event_time_2 operator()(const Site_2& line, const Site_2& c, const Site_2& a, const Site_2& b,
-                            const Point_2& fallback) const
+    bool operator()(const Site_2& line, const Site_2& c, const Site_2& a, const Site_2& b,
+                    Event_time_2& t) const
     {
       Site_2 s[3] = {c, a, b};
+      return make_time(PMA2::internal::switch_time_kind(line, a, b), line, s, t);
+    }
+  };
+  /// The foot of a point on the separator, exactly.
+  struct Compute_foot_time_2 {
+    Event_time_2 operator()(const Site_2& line, const Point_2& p) const
+    {
       Event_time_2 t;
-      if(make_time(PMA2::internal::switch_time_kind(line, a, b), line, s, t))
-        return t;
-      // The disk cannot be rebuilt from its generators: use the foot of the
-      // stored vertex, computed exactly.
-      Exact_FT e = (Exact_FT(line.q.x()) - Exact_FT(line.p.x())) * (Exact_FT(fallback.x()) - Exact_FT(line.p.x())) +
-                   (Exact_FT(line.q.y()) - Exact_FT(line.p.y())) * (Exact_FT(fallback.y()) - Exact_FT(line.p.y()));
+      t.kind_ = PMA2::internal::TIME_SWITCH;
+      t.c_ = line;
+      Exact_FT e = (Exact_FT(line.q.x()) - Exact_FT(line.p.x())) * (Exact_FT(p.x()) - Exact_FT(line.p.x())) +
+                   (Exact_FT(line.q.y()) - Exact_FT(line.p.y())) * (Exact_FT(p.y()) - Exact_FT(line.p.y()));
       t.exact_ = std::make_shared<Exact_FT>(e);
       t.approx_ = CGAL::to_interval(e);
       return t;
     }
   };
+  Compute_foot_time_2 compute_foot_time_2_object() const { return Compute_foot_time_2(); }
   Compute_switch_time_2 compute_switch_time_2_object() const { return Compute_switch_time_2(); }
 
   struct Compute_vanishing_time_2 {
@@ -484,6 +533,7 @@ public:
         }
       }
       ++filter_statistics().exact_comparisons;
+      typename PMA2::internal::Exact_scope_for<Exact_FT>::Type scope;
       return CGAL::compare(a.exact(), b.exact());
     }
   };
@@ -505,20 +555,32 @@ public:
       Site_2 s[3] = {a, b, c};
       PMA2::internal::Triple_relations rel = PMA2::internal::triple_relations<Kernel>(s);
       ++filter_statistics().interval_evaluations;
+      bool branches_decided = false;
       {
         Protect_FPU_rounding<true> protection;
         try {
           PMA2::internal::Circle_nt<Interval> circle;
           if(!disk<Interval>(s, rel, circle))
             return false;
-          double scale = (std::max)({std::fabs(circle.x.inf()), std::fabs(circle.x.sup()),
-                                     std::fabs(circle.y.inf()), std::fabs(circle.y.sup())});
-          if(tight(circle.x, scale) && tight(circle.y, scale) && tight(circle.r, scale)) {
-            centre = Point_2(CGAL::to_double(circle.x), CGAL::to_double(circle.y));
-            radius = CGAL::to_double(circle.r);
+          branches_decided = true;
+          if(circle.x.is_point() && circle.y.is_point() && circle.r.is_point()) {
+            centre = Point_2(circle.x.inf(), circle.y.inf());
+            radius = circle.r.inf();
             return true;
           }
         } catch(Uncertain_conversion_exception&) {
+        }
+      }
+      if(branches_decided) {
+        // The intervals took every branch: the same computation in
+        // double-double arithmetic (about 106 bits), rounded to double, gives
+        // the exact disk correctly rounded in all but ill-conditioned cases.
+        ++filter_statistics().double_double_evaluations;
+        PMA2::internal::Circle_nt<PMA2::internal::Double_double> circle;
+        if(disk<PMA2::internal::Double_double>(s, rel, circle)) {
+          centre = Point_2(circle.x.to_double(), circle.y.to_double());
+          radius = circle.r.to_double();
+          return true;
         }
       }
       ++filter_statistics().mpfr_evaluations;
@@ -538,6 +600,7 @@ public:
         }
       }
       ++filter_statistics().exact_evaluations;
+      typename PMA2::internal::Exact_scope_for<Exact_FT>::Type scope;
       PMA2::internal::Circle_nt<Exact_FT> circle;
       if(!disk<Exact_FT>(s, rel, circle))
         return false;
@@ -556,17 +619,6 @@ public:
                                            PMA2::internal::site_nt<NT>(s[1], cv),
                                            PMA2::internal::site_nt<NT>(s[2], cv)};
       return PMA2::internal::medial_circle(sn, rel, circle);
-    }
-
-    // A double interval is tight when its width is below 2^-42 of the
-    // magnitude of the centre's coordinates: its midpoint is then within
-    // about 1e-13 of the exact value, relative to the coordinates.
-    static bool tight(const Interval& v, double scale)
-    {
-      double lo = v.inf(), hi = v.sup();
-      if(!std::isfinite(lo) || !std::isfinite(hi))
-        return false;
-      return hi - lo <= std::ldexp(scale, -42);
     }
   };
   Construct_medial_disk_2 construct_medial_disk_2_object() const { return Construct_medial_disk_2(); }

@@ -86,6 +86,7 @@ struct Options {
   bool quick = false;
   std::string only;
   std::vector<std::string> skip;   // data shapes not to test
+  bool no_grid = false;            // no rectilinear random polygons (exact ties everywhere)
   std::string traits = "filtered";
   std::uint64_t seed_base = 0;
 };
@@ -241,6 +242,10 @@ void random_tests(Checker<Traits>& checker, const Options& o)
   const int step_polygons = o.quick ? 4 : 12;
   int done = 0;
   for(int kind = 0; kind < 3; ++kind) {
+    if(kind == 2 && o.no_grid) {
+      std::cout << "random: rectilinear polygons skipped\n";
+      continue;
+    }
     for(int i = 0; i < per_kind; ++i) {
       std::uint64_t seed = o.seed_base + std::uint64_t(kind) * 1000003u + std::uint64_t(i);
       int n = 3 + int((seed * 2654435761u) % 298);
@@ -364,6 +369,7 @@ int main(int argc, char** argv)
     else if(a == "--traits" && i + 1 < argc) o.traits = argv[++i];
     else if(a == "--seed-base" && i + 1 < argc) o.seed_base = std::strtoull(argv[++i], nullptr, 10);
     else if(a == "--skip" && i + 1 < argc) o.skip.push_back(argv[++i]);
+    else if(a == "--no-grid") o.no_grid = true;
     else { std::cerr << "unknown argument " << a << "\n"; return 2; }
   }
   if(o.traits == "epick") return run_all<CGAL::Progressive_medial_axis_traits_2<CGAL::Epick> >(o);

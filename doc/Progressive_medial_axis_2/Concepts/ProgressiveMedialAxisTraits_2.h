@@ -49,11 +49,13 @@ public:
   typedef unspecified_type Compute_start_time_2;
   /// A function object: `Event_time_2 operator()(Site_2 line)`, the time of the target of the separator.
   typedef unspecified_type Compute_end_time_2;
-  /// A function object: `Event_time_2 operator()(Site_2 line, Site_2 c, Site_2 a, Site_2 b, Point_2 fallback)`:
+  /// A function object: `bool operator()(Site_2 line, Site_2 c, Site_2 a, Site_2 b, Event_time_2& t)`:
   /// the time along `line` of the foot of the disk tangent to `c, a, b` (in
   /// counter-clockwise order around its centre), where `c` is `line` or its
-  /// reverse; `fallback` is the stored vertex, for when the disk cannot be rebuilt.
+  /// reverse; false if the disk cannot be built.
   typedef unspecified_type Compute_switch_time_2;
+  /// A function object: `Event_time_2 operator()(Site_2 line, Point_2 p)`: the time of the foot of `p`.
+  typedef unspecified_type Compute_foot_time_2;
   /// A function object: `bool operator()(Site_2 line, Site_2 a, Site_2 b, Site_2 d, Event_time_2& t)`:
   /// the vanishing time of `b`; false if the disk tangent to `a, b, d` in
   /// counter-clockwise order does not exist, does not touch the segments
@@ -80,6 +82,7 @@ public:
   Compute_start_time_2 compute_start_time_2_object() const;
   Compute_end_time_2 compute_end_time_2_object() const;
   Compute_switch_time_2 compute_switch_time_2_object() const;
+  Compute_foot_time_2 compute_foot_time_2_object() const;
   Compute_vanishing_time_2 compute_vanishing_time_2_object() const;
   Compare_event_time_2 compare_event_time_2_object() const;
   Is_event_in_past_2 is_event_in_past_2_object() const;

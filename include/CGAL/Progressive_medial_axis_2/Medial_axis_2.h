@@ -112,9 +112,9 @@ public:
   {
   public:
     Vertex() {}
-    const Point_2& point() const { return ma_->hds_.vertex(v_).point; }
+    const Point_2& point() const { return ma_->vertex_point(v_); }
     /// radius of the maximal disk centred here (0 at terminal points)
-    const FT& radius() const { return ma_->hds_.vertex(v_).radius; }
+    const FT& radius() const { return ma_->vertex_radius(v_); }
     Vertex_kind kind() const
     {
       int m = ma_->medial_degree(v_);
@@ -288,6 +288,19 @@ public:
   }
 
   const std::vector<Point_2>& points() const { return points_; }
+
+  /// The point and radius of vertex `v` of the half-edge structure
+  /// (computed on first use; not thread-safe).
+  const Point_2& vertex_point(int v) const
+  {
+    resolve(v);
+    return hds_.vertex(v).point;
+  }
+  const FT& vertex_radius(int v) const
+  {
+    resolve(v);
+    return hds_.vertex(v).radius;
+  }
   const Hds& halfedge_structure() const { return hds_; }
 
   /// Whether the half-edge's edge is a medial curve (not a boundary edge and
@@ -320,8 +333,8 @@ public:
 
   double curve_length(int h) const
   {
-    std::pair<double, double> a = to_xy(hds_.vertex(hds_.source(h)).point);
-    std::pair<double, double> b = to_xy(hds_.vertex(hds_.target(h)).point);
+    std::pair<double, double> a = to_xy(vertex_point(hds_.source(h)));
+    std::pair<double, double> b = to_xy(vertex_point(hds_.target(h)));
     Parabola par;
     if(!parabola(h, par))
       return std::hypot(b.first - a.first, b.second - a.second);
@@ -330,8 +343,8 @@ public:
 
   std::vector<std::pair<double, double> > curve_polyline(int h, double tol) const
   {
-    std::pair<double, double> a = to_xy(hds_.vertex(hds_.source(h)).point);
-    std::pair<double, double> b = to_xy(hds_.vertex(hds_.target(h)).point);
+    std::pair<double, double> a = to_xy(vertex_point(hds_.source(h)));
+    std::pair<double, double> b = to_xy(vertex_point(hds_.target(h)));
     std::vector<std::pair<double, double> > out;
     Parabola par;
     if(!parabola(h, par)) {
@@ -424,6 +437,17 @@ private:
     if(F.p1 == G.p0) return is_collinear(F.p0, F.p1, G.p1);
     if(G.p1 == F.p0) return is_collinear(G.p0, G.p1, F.p1);
     return false;
+  }
+
+  void resolve(int v) const
+  {
+    auto point_site = [this](int p0, int p1) {
+      return p0 == p1 ? Traits::Site_2::point(points_[p0]) : Traits::Site_2::segment(points_[p0], points_[p1]);
+    };
+    PMA2::internal::resolve_vertex(hds_, v, Traits(), [this, &point_site](int f) {
+      const PMA2::internal::Hds_face& x = hds_.face(f);
+      return point_site(x.p0, x.p1);
+    }, point_site);
   }
 
   bool is_collinear(int a, int b, int c) const

@@ -159,10 +159,10 @@ std::vector<Named_branch> named_branches(const Medial_axis& ma, const Names& nam
   }
   std::vector<Named_branch> out;
   for(const auto& kv : groups) {
-    const auto& vx = hds.vertex(kv.second.second);
-    auto p = Medial_axis::to_xy(vx.point);
+    const int v = kv.second.second;
+    auto p = Medial_axis::to_xy(ma.vertex_point(v));
     out.push_back(Named_branch{std::vector<std::string>(kv.second.first.begin(), kv.second.first.end()),
-                               p.first, p.second, CGAL::to_double(vx.radius)});
+                               p.first, p.second, CGAL::to_double(ma.vertex_radius(v))});
   }
   std::sort(out.begin(), out.end(), [](const Named_branch& x, const Named_branch& y) {
     if(x.generators != y.generators) return x.generators < y.generators;

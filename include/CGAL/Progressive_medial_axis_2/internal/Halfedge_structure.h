@@ -42,8 +42,15 @@ struct Hds_halfedge {
 
 template <class Point_2, class FT>
 struct Hds_vertex {
-  Point_2 point;
-  FT radius = FT(0);
+  // Coordinates and radius are computed on first use (see
+  // resolve_vertex()): most vertices of a progressive run are removed again
+  // before anyone looks at them.
+  mutable Point_2 point;
+  mutable FT radius = FT(0);
+  mutable bool pending = false;
+  // the generators that define a pending vertex, counter-clockwise: input
+  // point indices (p0, p1), with p0 == p1 for a point generator
+  int triple[3][2] = {{NO_INDEX, NO_INDEX}, {NO_INDEX, NO_INDEX}, {NO_INDEX, NO_INDEX}};
   int halfedge = NO_INDEX;   // a half-edge whose target is this vertex
   int input_point = NO_INDEX; // index of the polygon vertex, if it is one
   bool alive = true;
@@ -127,9 +134,26 @@ public:
     Vertex& x = vertices_[v];
     x.point = p;
     x.radius = r;
+    x.pending = false;
     x.halfedge = NO_INDEX;
     x.input_point = input_point;
     x.alive = true;
+    return v;
+  }
+
+  /// A vertex whose coordinates will be computed when first needed: the
+  /// centre of the disk tangent to the generators of the faces `a, b, c`
+  /// (counter-clockwise around it).
+  int new_pending_vertex(int a, int b, int c)
+  {
+    int v = new_vertex(Point_2(), FT(0));
+    Vertex& x = vertices_[v];
+    x.pending = true;
+    const int f[3] = {a, b, c};
+    for(int i = 0; i < 3; ++i) {
+      x.triple[i][0] = faces_[f[i]].p0;
+      x.triple[i][1] = faces_[f[i]].p1;
+    }
     return v;
   }
 
@@ -217,6 +241,53 @@ private:
   std::vector<Face> faces_;
   std::vector<int> free_edges_, free_vertices_, free_faces_;
 };
+
+/// Computes the coordinates and radius of a pending vertex: the disk tangent
+/// to the generators that defined it, or else to three consecutive
+/// generators around it (cocircular ones).  `site(f)` gives the traits site
+/// of face f, `point_site(p0, p1)` the site of input points (p0 == p1 for a
+/// point).
+template <class Traits, class Hds, class Site_of, class Point_site>
+void resolve_vertex(const Hds& hds, int v, const Traits& traits, const Site_of& site,
+                    const Point_site& point_site)
+{
+  const typename Hds::Vertex& x = hds.vertex(v);
+  if(!x.pending)
+    return;
+  bool done = false;
+  if(x.triple[0][0] != NO_INDEX)
+    done = traits.construct_medial_disk_2_object()(point_site(x.triple[0][0], x.triple[0][1]),
+                                                   point_site(x.triple[1][0], x.triple[1][1]),
+                                                   point_site(x.triple[2][0], x.triple[2][1]), x.point, x.radius);
+  // the faces around v, clockwise
+  std::vector<int> faces;
+  int h0 = x.halfedge, h = h0;
+  do {
+    faces.push_back(hds.face_of(h));
+    h = Hds::twin(hds.next(h));
+  } while(h != h0 && faces.size() < 64);
+  const std::size_t d = faces.size();
+  for(std::size_t i = 0; i < d && !done; ++i) {
+    int a = faces[(i + 2) % d], b = faces[(i + 1) % d], c = faces[i];
+    if(a < 0 || b < 0 || c < 0) continue;
+    done = traits.construct_medial_disk_2_object()(site(a), site(b), site(c), x.point, x.radius);
+  }
+  if(!done) {
+    // no disk from the generators (only with inexact decisions): take a
+    // neighbouring vertex whose position is known
+    h = h0;
+    do {
+      const typename Hds::Vertex& y = hds.vertex(hds.source(h));
+      if(!y.pending) {
+        x.point = y.point;
+        x.radius = y.radius;
+        break;
+      }
+      h = Hds::twin(hds.next(h));
+    } while(h != h0);
+  }
+  x.pending = false;
+}
 
 } // namespace internal
 } // namespace PMA2

@@ -12,6 +12,8 @@
 #include <CGAL/number_utils.h>
 #include <CGAL/Uncertain.h>
 
+#include <type_traits>
+
 namespace CGAL {
 namespace PMA2 {
 namespace internal {
@@ -89,8 +91,9 @@ Line_nt<NT> oriented_line(const Site_nt<NT>& s)
   // computations on rectilinear shapes rational)
   NT len = s.axis_parallel ? nt_abs(dx) + nt_abs(dy) : nt_sqrt(dx * dx + dy * dy);
   Line_nt<NT> l;
-  l.nx = -dy / len;
-  l.ny = dx / len;
+  NT inv = NT(1) / len;
+  l.nx = -dy * inv;
+  l.ny = dx * inv;
   l.k = l.nx * s.ax + l.ny * s.ay;
   return l;
 }
@@ -404,9 +407,16 @@ bool chord_far_end(const NT& px, const NT& py, const NT& qx, const NT& qy,
   NT vx = c.x - px, vy = c.y - py;
   NT d2 = dx * dx + dy * dy;
   NT h = cross2(dx, dy, vx, vy);
-  NT rad = c.r * c.r * d2 - h * h;
-  if(rad < 0)
-    return false;
+  NT r2d2 = c.r * c.r * d2;
+  NT rad = r2d2 - h * h;
+  if(rad < 0) {
+    // With floating-point numbers, a circle through an endpoint of the
+    // separator or tangent to it (an exact tie, common on integer grids)
+    // can come out a rounding error short of the line: count it as tangent.
+    if(!std::is_floating_point<NT>::value || rad < -NT(1e-12) * r2d2)
+      return false;
+    rad = NT(0);
+  }
   t = dx * vx + dy * vy + nt_sqrt_nonnegative(rad);
   return true;
 }

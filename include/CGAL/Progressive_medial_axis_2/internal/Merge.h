@@ -52,6 +52,13 @@
 #include <cstddef>
 #include <vector>
 
+#ifdef CGAL_PMA2_TRACE
+#include <iostream>
+#define CGAL_PMA2_TRACE_MSG(x) (std::cerr << x << "\n")
+#else
+#define CGAL_PMA2_TRACE_MSG(x) ((void)0)
+#endif
+
 namespace CGAL {
 namespace PMA2 {
 namespace internal {
@@ -131,6 +138,7 @@ public:
     events_.clear();
     heap_.clear();
     live_events_ = 0;
+    CGAL_PMA2_TRACE_MSG("merge P=" << P_ << " Q=" << Q_ << " turns " << int(turn_P) << " " << int(turn_Q));
     nodes_.push_back(Node{Cp_, NO_INDEX, 1, NO_INDEX, NO_INDEX});
     nodes_.push_back(Node{Cm_, 0, NO_INDEX, NO_INDEX, NO_INDEX});
     now_ = traits_.compute_start_time_2_object()(line_);
@@ -187,6 +195,30 @@ private:
   };
 
   int input_of(int v) const { return hds_.vertex(v).input_point; }
+
+#ifdef CGAL_PMA2_TRACE
+  template <class T>
+  static auto approx(const T& t) -> decltype(t.to_double()) { return t.to_double(); }
+  static double approx(const double& t) { return t; }
+  std::string list_string() const
+  {
+    std::string out;
+    for(int n = 0; n != NO_INDEX; n = nodes_[n].next) {
+      const Hds_face& f = hds_.face(nodes_[n].face);
+      out += (n == 0 ? "[C+" : n == 1 ? "C-]" : (f.is_point ? "p" : "s") + std::to_string(f.p0) + (f.is_point ? "" : "-" + std::to_string(f.p1)));
+      out += " ";
+    }
+    return out;
+  }
+#endif
+
+  const Point_2& vertex_point(int v) const
+  {
+    resolve_vertex(hds_, v, traits_, [this](int f) { return site(f); },
+                   [this](int p0, int p1) { return p0 == p1 ? Site_2::point(points_[p0])
+                                                            : Site_2::segment(points_[p0], points_[p1]); });
+    return hds_.vertex(v).point;
+  }
 
   // Moves every half-edge of vertex `from` to vertex `to` (two corners of one
   // polygon vertex) and deletes `from`.
@@ -290,8 +322,9 @@ private:
     for(int j = k - 1; j >= jmin; --j) {
       const int w = hds_.target(plus_[j - 1]);
       const int G = face_across(plus_[j - 1]), Gp = face_across(plus_[j]);
-      Switch s{w, G, Gp, Hds::twin(plus_[j - 1]), Hds::twin(plus_[j]),
-               switch_time(line_, site_p_, site(G), site(Gp), hds_.vertex(w).point)};
+      Switch s{w, G, Gp, Hds::twin(plus_[j - 1]), Hds::twin(plus_[j]), Time()};
+      if(!switch_time(line_, site_p_, site(G), site(Gp), s.time))
+        s.time = traits_.compute_foot_time_2_object()(line_, vertex_point(w));
       sw_plus_.push_back(s);
     }
     const int km = int(minus_.size());
@@ -304,8 +337,9 @@ private:
     for(int j = 1; j <= jmax; ++j) {
       const int w = hds_.target(minus_[j - 1]);
       const int Gp = face_across(minus_[j - 1]), G = face_across(minus_[j]);
-      Switch s{w, G, Gp, Hds::twin(minus_[j]), Hds::twin(minus_[j - 1]),
-               switch_time(line_, site_m_, site(Gp), site(G), hds_.vertex(w).point)};
+      Switch s{w, G, Gp, Hds::twin(minus_[j]), Hds::twin(minus_[j - 1]), Time()};
+      if(!switch_time(line_, site_m_, site(Gp), site(G), s.time))
+        s.time = traits_.compute_foot_time_2_object()(line_, vertex_point(w));
       sw_minus_.push_back(s);
     }
   }
@@ -406,6 +440,9 @@ private:
       }
       if(which < 0)
         break;
+      CGAL_PMA2_TRACE_MSG("  event " << (which == 0 ? "switch+" : which == 1 ? "switch-" : "vanish") << " t="
+                          << approx(which == 0 ? sw_plus_[ip].time : which == 1 ? sw_minus_[im].time : events_[ev].time)
+                          << " L=" << list_string());
       if(which == 0) {
         advance_time(sw_plus_[ip].time);
         switch_plus(sw_plus_[ip++]);
@@ -457,15 +494,8 @@ private:
   {
     ++stats_.vanishings;
     const int a = nodes_[n].prev, c = nodes_[n].next;
-    const int fa = nodes_[a].face, fb = nodes_[n].face, fc = nodes_[c].face;
-    Point_2 centre;
-    FT radius;
-    if(!traits_.construct_medial_disk_2_object()(site(fa), site(fb), site(fc), centre, radius)) {
-      ++stats_.anomalies;
-      centre = hds_.vertex(hds_.source(nodes_[n].right_he)).point;
-      radius = hds_.vertex(hds_.source(nodes_[n].right_he)).radius;
-    }
-    const int v = hds_.new_vertex(centre, radius);
+    const int fa = nodes_[a].face, fc = nodes_[c].face;
+    const int v = hds_.new_pending_vertex(fa, nodes_[n].face, fc);
     const int AB = nodes_[a].right_he, BC = nodes_[n].right_he;
     hds_.he(AB).vertex = v;
     hds_.he(BC).vertex = v;
@@ -510,7 +540,6 @@ private:
     const int Fk = face_across(minus_.back());
     const bool q1 = is_point_at(F1, Q_), q2 = is_point_at(Fk, Q_);
     const int Qm = q1 ? F1 : (q2 ? Fk : hds_.new_face(true, Q_, Q_));
-    const Site_2 site_q = Site_2::point(points_[Q_]);
 
     std::vector<int>& g = chain_nodes_;
     g.clear();
@@ -527,16 +556,8 @@ private:
     hds_.he(Hds::twin(ch[0])).vertex = b0;
     hds_.he(ch[m - 1]).vertex = bm;
     for(int i = 0; i + 1 < m; ++i) {
-      const int fa = nodes_[g[i]].face, fb = nodes_[g[i + 1]].face;
-      Point_2 centre;
-      FT radius;
       const int o = nodes_[g[i]].right_he;
-      if(!traits_.construct_medial_disk_2_object()(site_q, site(fa), site(fb), centre, radius)) {
-        ++stats_.anomalies;
-        centre = hds_.vertex(hds_.source(o)).point;
-        radius = hds_.vertex(hds_.source(o)).radius;
-      }
-      const int v = hds_.new_vertex(centre, radius);
+      const int v = hds_.new_pending_vertex(Qm, nodes_[g[i]].face, nodes_[g[i + 1]].face);
       hds_.he(o).vertex = v;
       hds_.he(ch[i]).vertex = v;
       hds_.he(Hds::twin(ch[i + 1])).vertex = v;

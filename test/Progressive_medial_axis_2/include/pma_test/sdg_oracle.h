@@ -47,8 +47,8 @@
 //
 // Coincident Voronoi vertices (cocircular sites) are merged: all faces of one empty circle
 // are connected through Delaunay edges, and two adjacent inside faces are merged when their
-// vertices are equal: their 512-bit values agree to 2^-400 relative, CORE::Expr (exact mode)
-// finds them equal, and their 2048-bit values agree to 2^-1800 (any disagreement among
+// vertices are equal: their 512-bit values agree to 2^-216 relative, CORE::Expr (exact mode)
+// finds them equal, and their 2048-bit values agree to 2^-984 (any disagreement among
 // these, or with the SDG's is_degenerate_edge when it says "degenerate", throws). The SDG's
 // is_degenerate_edge alone is not enough: it follows symbolic conventions when a segment's
 // endpoint is another site of the circle (a flat vertex with its two edges, say) and then
@@ -57,13 +57,21 @@
 //
 // Numbers. Coordinates and radii of inside vertices come from CGAL's Voronoi vertex
 // construction (Segment_Delaunay_graph_traits over Simple_cartesian<Gmpfr>, Field_with_sqrt)
-// evaluated with 512-bit MPFR, rounded to the nearest double: every branch the construction
-// takes is on an exact polynomial of the double inputs or on a sign that cannot be zero, so
-// the result is the exact vertex to ~2^-450 relative. Each such vertex is verified (equal
+// evaluated with 512-bit MPFR, rounded to the nearest double. The branches the construction
+// takes are on polynomials of the double inputs (computed exactly at 512 bits), on signs it
+// asserts non-zero, or on signs whose zero case does not matter (sigma/rho in its
+// point-line-line case multiply a square root that is then zero), so the result is the
+// exact vertex to ~2^-250 relative or better (the square root of an exact zero, rounded, is
+// ~2^-256; typically ~2^-500), and rounding it gives the correctly rounded double unless the
+// exact value is that close to a rounding boundary. Each such vertex is verified (equal
 // distances to its three closed sites, and the side of every segment site agreeing with the
 // combinatorial side); a failure is retried at 2048 bits and then throws std::logic_error.
 // Lengths: straight for segment/segment and point/point pairs, closed-form parabolic arc
 // length for point/segment pairs, from the rounded vertices.
+//
+// Global state: while it runs, the oracle changes MPFR's default precision and CORE's
+// evaluation flags, restoring them afterwards; do not run it concurrently with other code
+// that uses CORE::Expr or Gmpfr.
 //
 // Preconditions (not checked, except as noted): the rings form a valid polygon with holes
 // (simple rings, pairwise disjoint, holes inside the outer ring, not nested). Checked: at
@@ -711,8 +719,9 @@ private:
     for(int k = 0; k < 3; ++k) d2[k] = squared_distance_to_site(F.site[k], c);
     const double scale = (std::max)({P.max_abs_coordinate, std::abs(nearest_double(c.x())),
                                      std::abs(nearest_double(c.y())), 1e-300});
-    // |d_k^2 - d_0^2| <= 2^-(bits/2) * scale^2 (a wrong root is off by far more)
-    const MT tol = MT(std::ldexp(scale * scale, -static_cast<int>(bits / 2)));
+    // |d_k^2 - d_0^2| <= 2^-(bits/2 - 40) * scale^2: a square root of an exactly-zero
+    // quantity (rounded to ~2^-bits) is off by ~2^-(bits/2); a wrong root by far more
+    const MT tol = MT(std::ldexp(scale * scale, -static_cast<int>(bits / 2 - 40)));
     for(int k = 1; k < 3; ++k)
       if(CGAL::compare(CGAL::abs(d2[k] - d2[0]), tol) > 0) {
         why = "distances to the sites differ";
@@ -727,7 +736,7 @@ private:
       const MT cr = (b.x() - a.x()) * (c.y() - a.y()) - (b.y() - a.y()) * (c.x() - a.x());
       const bool left = CGAL::sign(cr) > 0;
       const bool interior = (left == static_cast<bool>(P.left_interior[P.ring[S.g]]));
-      const MT margin = MT(std::ldexp(scale * scale, -static_cast<int>(bits / 2)));
+      const MT margin = MT(std::ldexp(scale * scale, -static_cast<int>(bits / 2 - 40)));
       if(CGAL::compare(CGAL::abs(cr), margin) > 0 && interior != (F.side[k] > 0)) {
         why = "on the wrong side of " + S.id;
         return false;
@@ -767,8 +776,9 @@ private:
   }
 
   // Are the exact Voronoi vertices of the inside faces f and g equal? Equal iff their
-  // 512-bit values agree to 2^-400 relative AND CORE::Expr in exact mode finds them equal
-  // AND their 2048-bit values agree to 2^-1800; any disagreement among these, or with the
+  // 512-bit values agree to 2^-216 relative AND CORE::Expr in exact mode finds them equal
+  // AND their 2048-bit values agree to 2^-984 (MPFR errors reach ~2^-(bits/2) when an
+  // exactly-zero quantity goes through a square root); any disagreement among these, or with the
   // SDG's is_degenerate_edge when that says "degenerate", throws std::logic_error.
   // (is_degenerate_edge alone is not enough: it applies symbolic conventions when an
   // endpoint of a segment site is one of the other sites, and then says "not degenerate"
@@ -780,14 +790,15 @@ private:
                              sites[faces[f].site[2]].id + " and " + sites[faces[g].site[0]].id +
                              " " + sites[faces[g].site[1]].id + " " + sites[faces[g].site[2]].id;
     const double scale = (std::max)(scale_of(f), scale_of(g));
-    auto agree = [&](long bits, int exponent) {
+    auto agree = [&](long bits) {
+      const int exponent = static_cast<int>(bits / 2 - 40);
       Mpfr_precision_guard guard(bits);
       const MPoint a = mvertex(f), b = mvertex(g);
       const MT tol(std::ldexp(scale, -exponent));
       return CGAL::compare(CGAL::abs(a.x() - b.x()), tol) <= 0 &&
              CGAL::compare(CGAL::abs(a.y() - b.y()), tol) <= 0;
     };
-    if(!agree(512, 400)) {
+    if(!agree(512)) {
       if(sdg_degenerate) throw std::logic_error(what + ": SDG says equal, MPFR says different");
       return false;
     }
@@ -799,8 +810,8 @@ private:
     }
     ++stats.exact_coincidence_tests;
     if(!equal)
-      throw std::logic_error(what + ": equal to 2^-400 relative but CORE says different");
-    if(!agree(2048, 1800))
+      throw std::logic_error(what + ": equal to 2^-216 relative but CORE says different");
+    if(!agree(2048))
       throw std::logic_error(what + ": CORE says equal, 2048-bit MPFR says different");
     return true;
   }
