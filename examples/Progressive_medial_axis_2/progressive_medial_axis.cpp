@@ -175,7 +175,7 @@ int run(const Options& o)
       std::ofstream f = open_out(o.frames_prefix + name);
       CGAL::PMA2::write_svg(f, pma->medial_axis(),
                             "step " + std::to_string(pma->current_step()) + " of " +
-                              std::to_string(pma->number_of_steps()));
+                              std::to_string(pma->number_of_steps()), 1000, true);
       ++next_frame;
     }
   };

@@ -164,6 +164,114 @@ struct To_nt_convert {
   template <class T> NT operator()(const T& x) const { return NT(x); }
 };
 
+/// The function objects of the concept `ProgressiveMedialAxisTraits_2`,
+/// written once on top of the primitives of a model `Model` (static member
+/// functions):
+///   bool time(Time_kind, const Site_2& line, const Site_2* s, Event_time_2& t)
+///   Event_time_2 foot_time(const Site_2& line, const Point_2& p)
+///   Comparison_result compare_times(const Event_time_2&, const Event_time_2&)
+///   bool in_past(const Event_time_2& t, const Event_time_2& now, const Site_2& line)
+///   bool disk(const Site_2* s, Point_2& centre, FT& radius)
+template <class Model, class Kernel_, class FT_, class Point_2_, class Event_time_2_>
+class Traits_functors
+{
+public:
+  typedef Kernel_ Kernel;
+  typedef FT_ FT;
+  typedef Point_2_ Point_2;
+  /// A generator: a point, or a segment with the shape on its left.
+  typedef Site<Point_2> Site_2;
+  /// The position of an event along the separator.
+  typedef Event_time_2_ Event_time_2;
+  typedef typename Kernel::Orientation_2 Orientation_2;
+
+  Orientation_2 orientation_2_object() const { return Kernel().orientation_2_object(); }
+
+  /// The time 0 (the source of the separator) and the time of its target.
+  struct Compute_start_time_2 {
+    Event_time_2 operator()(const Site_2& line) const
+    {
+      Event_time_2 t;
+      Model::time(TIME_ZERO, line, nullptr, t);
+      return t;
+    }
+  };
+  struct Compute_end_time_2 {
+    Event_time_2 operator()(const Site_2& line) const
+    {
+      Event_time_2 t;
+      Model::time(TIME_END, line, nullptr, t);
+      return t;
+    }
+  };
+
+  /// Time, along the separator `line` (from its source P to its target Q),
+  /// of the foot of the disk tangent to `c, a, b` in counter-clockwise
+  /// order, where `c` is one side of the separator (`line` or its reverse):
+  /// a vertex of the cell of `c`.  False if the disk cannot be built.
+  struct Compute_switch_time_2 {
+    bool operator()(const Site_2& line, const Site_2& c, const Site_2& a, const Site_2& b,
+                    Event_time_2& t) const
+    {
+      Site_2 s[3] = {c, a, b};
+      return Model::time(switch_time_kind(line, a, b), line, s, t);
+    }
+  };
+
+  /// Time, along the separator `line`, of the foot of the point `p`.
+  struct Compute_foot_time_2 {
+    Event_time_2 operator()(const Site_2& line, const Point_2& p) const { return Model::foot_time(line, p); }
+  };
+
+  /// Time at which the tip retracting along `line` meets the disk tangent to
+  /// `a, b, d` (in counter-clockwise order): the vanishing of `b`.  False if
+  /// there is no such disk, if it does not touch the segments themselves, or
+  /// if it does not meet the separator's line.
+  struct Compute_vanishing_time_2 {
+    bool operator()(const Site_2& line, const Site_2& a, const Site_2& b, const Site_2& d,
+                    Event_time_2& t) const
+    {
+      Site_2 s[3] = {a, b, d};
+      return Model::time(TIME_VANISH, line, s, t);
+    }
+  };
+
+  struct Compare_event_time_2 {
+    Comparison_result operator()(const Event_time_2& a, const Event_time_2& b) const
+    {
+      return Model::compare_times(a, b);
+    }
+  };
+
+  /// Whether an event computed at time `t` lies before the current time
+  /// `now` on the separator `line`, so that it will never happen.
+  struct Is_event_in_past_2 {
+    bool operator()(const Event_time_2& t, const Event_time_2& now, const Site_2& line) const
+    {
+      return Model::in_past(t, now, line);
+    }
+  };
+
+  /// Constructs the disk tangent to three sites in counter-clockwise order
+  /// around its centre.  False if there is none.
+  struct Construct_medial_disk_2 {
+    bool operator()(const Site_2& a, const Site_2& b, const Site_2& c, Point_2& centre, FT& radius) const
+    {
+      Site_2 s[3] = {a, b, c};
+      return Model::disk(s, centre, radius);
+    }
+  };
+
+  Compute_start_time_2 compute_start_time_2_object() const { return Compute_start_time_2(); }
+  Compute_end_time_2 compute_end_time_2_object() const { return Compute_end_time_2(); }
+  Compute_switch_time_2 compute_switch_time_2_object() const { return Compute_switch_time_2(); }
+  Compute_foot_time_2 compute_foot_time_2_object() const { return Compute_foot_time_2(); }
+  Compute_vanishing_time_2 compute_vanishing_time_2_object() const { return Compute_vanishing_time_2(); }
+  Compare_event_time_2 compare_event_time_2_object() const { return Compare_event_time_2(); }
+  Is_event_in_past_2 is_event_in_past_2_object() const { return Is_event_in_past_2(); }
+  Construct_medial_disk_2 construct_medial_disk_2_object() const { return Construct_medial_disk_2(); }
+};
+
 } // namespace internal
 } // namespace PMA2
 
@@ -187,123 +295,110 @@ construction and every decision of the merge is computed in `K::FT`.
 */
 template <class K>
 class Progressive_medial_axis_traits_2
+  : public PMA2::internal::Traits_functors<Progressive_medial_axis_traits_2<K>, K, typename K::FT,
+                                           typename K::Point_2, typename K::FT>
 {
+  typedef PMA2::internal::Traits_functors<Progressive_medial_axis_traits_2<K>, K, typename K::FT,
+                                          typename K::Point_2, typename K::FT> Base;
+  friend Base;
+
 public:
-  typedef K Kernel;
-  typedef typename K::FT FT;
-  typedef typename K::Point_2 Point_2;
-  /// A generator: a point, or a segment with the shape on its left.
-  typedef PMA2::internal::Site<Point_2> Site_2;
-  /// The position of an event along the separator.
-  typedef FT Event_time_2;
-  typedef typename K::Orientation_2 Orientation_2;
+  typedef typename Base::FT FT;
+  typedef typename Base::Point_2 Point_2;
+  typedef typename Base::Site_2 Site_2;
+  typedef typename Base::Event_time_2 Event_time_2;
 
   /// Whether the event decisions of this model are exact.
   static constexpr bool Has_exact_decisions = !std::is_floating_point<FT>::value;
 
-  Orientation_2 orientation_2_object() const { return Kernel().orientation_2_object(); }
+private:
+  static bool time(PMA2::internal::Time_kind kind, const Site_2& line, const Site_2* s, Event_time_2& t)
+  {
+    PMA2::internal::Triple_relations rel;
+    if(s != nullptr) rel = PMA2::internal::triple_relations<K>(s);
+    return PMA2::internal::evaluate_time<FT>(kind, line, s, rel, PMA2::internal::Identity_convert(), t);
+  }
 
-  /// Constructs the disk tangent to three sites in counter-clockwise order.
-  struct Construct_medial_disk_2 {
-    bool operator()(const Site_2& a, const Site_2& b, const Site_2& c,
-                    Point_2& centre, FT& radius) const
-    {
-      Site_2 s[3] = {a, b, c};
-      PMA2::internal::Triple_relations rel = PMA2::internal::triple_relations<Kernel>(s);
-      PMA2::internal::Identity_convert cv;
-      PMA2::internal::Site_nt<FT> sn[3] = {PMA2::internal::site_nt<FT>(a, cv),
-                                           PMA2::internal::site_nt<FT>(b, cv),
-                                           PMA2::internal::site_nt<FT>(c, cv)};
-      PMA2::internal::Circle_nt<FT> circle;
-      if(!PMA2::internal::medial_circle(sn, rel, circle))
-        return false;
-      centre = Point_2(circle.x, circle.y);
-      radius = circle.r;
-      return true;
-    }
-  };
-  Construct_medial_disk_2 construct_medial_disk_2_object() const { return Construct_medial_disk_2(); }
+  static Event_time_2 foot_time(const Site_2& line, const Point_2& p)
+  {
+    return (line.q.x() - line.p.x()) * (p.x() - line.p.x()) + (line.q.y() - line.p.y()) * (p.y() - line.p.y());
+  }
 
-  /// The time 0 (the source of the separator) and the time of its target.
-  struct Compute_start_time_2 {
-    Event_time_2 operator()(const Site_2&) const { return FT(0); }
-  };
-  struct Compute_end_time_2 {
-    Event_time_2 operator()(const Site_2& c) const
-    {
-      FT t;
-      PMA2::internal::evaluate_time<FT>(PMA2::internal::TIME_END, c, (const Site_2*)nullptr,
-                                        PMA2::internal::Triple_relations(),
-                                        PMA2::internal::Identity_convert(), t);
-      return t;
-    }
-  };
-  Compute_start_time_2 compute_start_time_2_object() const { return Compute_start_time_2(); }
-  Compute_end_time_2 compute_end_time_2_object() const { return Compute_end_time_2(); }
+  static Comparison_result compare_times(const Event_time_2& a, const Event_time_2& b) { return CGAL::compare(a, b); }
 
-  /// Time, along the separator `line` (from its source P to its target Q),
-  /// of the foot of the disk tangent to `c, a, b` in counter-clockwise
-  /// order, where `c` is one side of the separator (`line` or its reverse):
-  /// a vertex of the cell of `c`.  False if the disk cannot be built.
-  struct Compute_switch_time_2 {
-    bool operator()(const Site_2& line, const Site_2& c, const Site_2& a, const Site_2& b,
-                    Event_time_2& t) const
-    {
-      Site_2 s[3] = {c, a, b};
-      PMA2::internal::Triple_relations rel = PMA2::internal::triple_relations<Kernel>(s);
-      return PMA2::internal::evaluate_time<FT>(PMA2::internal::switch_time_kind(line, a, b), line, s, rel,
-                                               PMA2::internal::Identity_convert(), t);
+  // With floating-point decisions, times within a few ulps of `now` count as now.
+  static bool in_past(const Event_time_2& t, const Event_time_2& now, const Site_2& line)
+  {
+    if constexpr(Has_exact_decisions) {
+      return CGAL::compare(t, now) == SMALLER;
+    } else {
+      FT scale;
+      time(PMA2::internal::TIME_END, line, nullptr, scale);
+      return t < now - FT(1e-12) * scale;
     }
-  };
-  /// Time, along the separator `line`, of the foot of the point `p`.
-  struct Compute_foot_time_2 {
-    Event_time_2 operator()(const Site_2& line, const Point_2& p) const
-    {
-      return (line.q.x() - line.p.x()) * (p.x() - line.p.x()) + (line.q.y() - line.p.y()) * (p.y() - line.p.y());
-    }
-  };
-  Compute_foot_time_2 compute_foot_time_2_object() const { return Compute_foot_time_2(); }
-  Compute_switch_time_2 compute_switch_time_2_object() const { return Compute_switch_time_2(); }
+  }
 
-  /// Time at which the tip retracting along `c` meets the disk tangent to
-  /// `a, b, d` (in counter-clockwise order): the vanishing of `b`.  False if
-  /// there is no such disk or it does not meet the separator's line.
-  struct Compute_vanishing_time_2 {
-    bool operator()(const Site_2& c, const Site_2& a, const Site_2& b, const Site_2& d,
-                    Event_time_2& t) const
-    {
-      Site_2 s[3] = {a, b, d};
-      PMA2::internal::Triple_relations rel = PMA2::internal::triple_relations<Kernel>(s);
-      return PMA2::internal::evaluate_time<FT>(PMA2::internal::TIME_VANISH, c, s, rel,
-                                               PMA2::internal::Identity_convert(), t);
-    }
-  };
-  Compute_vanishing_time_2 compute_vanishing_time_2_object() const { return Compute_vanishing_time_2(); }
-
-  struct Compare_event_time_2 {
-    Comparison_result operator()(const Event_time_2& a, const Event_time_2& b) const
-    {
-      return CGAL::compare(a, b);
-    }
-  };
-  Compare_event_time_2 compare_event_time_2_object() const { return Compare_event_time_2(); }
-
-  /// Whether an event computed at time `t` lies before the current time
-  /// `now` on the separator `c`, so that it will never happen.  With
-  /// floating-point decisions, times within a few ulps of `now` count as now.
-  struct Is_event_in_past_2 {
-    bool operator()(const Event_time_2& t, const Event_time_2& now, const Site_2& c) const
-    {
-      if constexpr(Has_exact_decisions) {
-          return CGAL::compare(t, now) == SMALLER;
-      } else {
-        FT scale = Compute_end_time_2()(c);
-        return t < now - FT(1e-12) * scale;
-      }
-    }
-  };
-  Is_event_in_past_2 is_event_in_past_2_object() const { return Is_event_in_past_2(); }
+  static bool disk(const Site_2* s, Point_2& centre, FT& radius)
+  {
+    PMA2::internal::Triple_relations rel = PMA2::internal::triple_relations<K>(s);
+    PMA2::internal::Identity_convert cv;
+    PMA2::internal::Site_nt<FT> sn[3] = {PMA2::internal::site_nt<FT>(s[0], cv), PMA2::internal::site_nt<FT>(s[1], cv),
+                                         PMA2::internal::site_nt<FT>(s[2], cv)};
+    PMA2::internal::Circle_nt<FT> circle;
+    if(!PMA2::internal::medial_circle(sn, rel, circle))
+      return false;
+    centre = Point_2(circle.x, circle.y);
+    radius = circle.r;
+    return true;
+  }
 };
+
+namespace PMA2 {
+namespace internal {
+
+/// An event time of the filtered traits: an interval that encloses it, and
+/// what is needed to evaluate it again more precisely on demand.
+template <class Site_2, class Exact_FT>
+class Filtered_event_time
+{
+public:
+  typedef Interval_nt<false> Interval;
+  typedef Mpfr_interval Mpfr;
+
+  Filtered_event_time() : approx_(0) {}
+  const Interval& approx() const { return approx_; }
+  double to_double() const { return CGAL::to_double(approx_); }
+
+  /// The time in MPFR intervals at the current MPFR precision.
+  /// Throws `Uncertain_conversion_exception` if a branch cannot be decided.
+  bool mpfr(Mpfr& t) const
+  {
+    To_nt_convert<Mpfr> cv;
+    return evaluate_time<Mpfr>(kind_, c_, s_, rel_, cv, t);
+  }
+
+  /// The exact time (progressive evaluation off, see Core_exact_scope).
+  const Exact_FT& exact() const
+  {
+    if(!exact_) {
+      typename Exact_scope_for<Exact_FT>::Type scope;
+      Exact_FT t(0);
+      To_nt_convert<Exact_FT> cv;
+      evaluate_time<Exact_FT>(kind_, c_, s_, rel_, cv, t);
+      exact_ = std::make_shared<Exact_FT>(t);
+    }
+    return *exact_;
+  }
+
+  Time_kind kind_ = TIME_ZERO;
+  Interval approx_;
+  Site_2 c_, s_[3];
+  Triple_relations rel_;
+  mutable std::shared_ptr<Exact_FT> exact_;
+};
+
+} // namespace internal
+} // namespace PMA2
 
 /*!
 \ingroup PkgProgressiveMedialAxis2Traits
@@ -312,8 +407,8 @@ The filtered traits model: every decision is exact, and almost all are
 taken in floating point.  A decision is evaluated first in double interval
 arithmetic (`Interval_nt`), then, when the interval cannot decide, in MPFR
 interval arithmetic at 256 and at 2048 bits, and only then exactly with the
-number type of `EK` (default `CORE::Expr`), which in practice happens only
-for exact ties of degenerate inputs.
+number type of `EK` (default `CORE::Expr`, with its progressive evaluation
+off), which in practice happens only for exact ties of degenerate inputs.
 
 Constructed vertices: the double intervals decide the branches of the
 construction (which of two tangent circles, ...); the disk is then computed
@@ -321,21 +416,28 @@ in double-double arithmetic (about 106 bits) and rounded to double, which
 gives the exact disk correctly rounded in all but ill-conditioned cases.
 When the intervals cannot decide a branch, MPFR intervals are used until
 both ends round to the same double (the exact point correctly rounded), or
-else the exact value is rounded to double.
-Points are those of `CK` (double coordinates).
+else the exact value is rounded to double.  Points are those of `CK`
+(double coordinates).
 
 \cgalModels `ProgressiveMedialAxisTraits_2`
 */
 template <class CK = Exact_predicates_inexact_constructions_kernel,
           class EK = Simple_cartesian<CORE::Expr> >
 class Progressive_medial_axis_filtered_traits_2
+  : public PMA2::internal::Traits_functors<
+      Progressive_medial_axis_filtered_traits_2<CK, EK>, CK, typename CK::FT, typename CK::Point_2,
+      PMA2::internal::Filtered_event_time<PMA2::internal::Site<typename CK::Point_2>, typename EK::FT> >
 {
+  typedef PMA2::internal::Traits_functors<
+    Progressive_medial_axis_filtered_traits_2<CK, EK>, CK, typename CK::FT, typename CK::Point_2,
+    PMA2::internal::Filtered_event_time<PMA2::internal::Site<typename CK::Point_2>, typename EK::FT> > Base;
+  friend Base;
+
 public:
-  typedef CK Kernel;
-  typedef typename CK::FT FT;
-  typedef typename CK::Point_2 Point_2;
-  typedef PMA2::internal::Site<Point_2> Site_2;
-  typedef typename CK::Orientation_2 Orientation_2;
+  typedef typename Base::FT FT;
+  typedef typename Base::Point_2 Point_2;
+  typedef typename Base::Site_2 Site_2;
+  typedef typename Base::Event_time_2 Event_time_2;
   typedef typename EK::FT Exact_FT;
   typedef Interval_nt<false> Interval;
   typedef PMA2::internal::Mpfr_interval Mpfr;
@@ -345,12 +447,12 @@ public:
   /// Counters of the filter stages (shared by all objects of this class in
   /// the thread).
   struct Filter_statistics {
-    std::size_t interval_evaluations = 0;  ///< times and disks evaluated in double intervals
+    std::size_t interval_evaluations = 0;      ///< times and disks evaluated in double intervals
     std::size_t double_double_evaluations = 0; ///< disks constructed in double-double arithmetic
-    std::size_t mpfr_evaluations = 0;      ///< ... that needed MPFR intervals
-    std::size_t exact_evaluations = 0;     ///< ... that needed the exact number type
-    std::size_t mpfr_comparisons = 0;      ///< comparisons of times decided by MPFR intervals
-    std::size_t exact_comparisons = 0;     ///< comparisons of times decided exactly
+    std::size_t mpfr_evaluations = 0;          ///< ... that needed MPFR intervals
+    std::size_t exact_evaluations = 0;         ///< ... that needed the exact number type
+    std::size_t mpfr_comparisons = 0;          ///< comparisons of times decided by MPFR intervals
+    std::size_t exact_comparisons = 0;         ///< comparisons of times decided exactly
   };
   static Filter_statistics& filter_statistics()
   {
@@ -358,59 +460,18 @@ public:
     return s;
   }
 
-  /// An event time: an interval that encloses it, and what is needed to
-  /// evaluate it again more precisely on demand.
-  class Event_time_2 {
-  public:
-    Event_time_2() : approx_(0) {}
-    const Interval& approx() const { return approx_; }
-    double to_double() const { return CGAL::to_double(approx_); }
-
-    /// The time in MPFR intervals at the current MPFR precision.
-    /// Throws `Uncertain_conversion_exception` if a branch cannot be decided.
-    bool mpfr(Mpfr& t) const
-    {
-      PMA2::internal::To_nt_convert<Mpfr> cv;
-      return PMA2::internal::evaluate_time<Mpfr>(kind_, c_, s_, rel_, cv, t);
-    }
-
-    const Exact_FT& exact() const
-    {
-      if(!exact_) {
-        typename PMA2::internal::Exact_scope_for<Exact_FT>::Type scope;
-        ++filter_statistics().exact_evaluations;
-        Exact_FT t(0);
-        PMA2::internal::To_nt_convert<Exact_FT> cv;
-        PMA2::internal::evaluate_time<Exact_FT>(kind_, c_, s_, rel_, cv, t);
-        exact_ = std::make_shared<Exact_FT>(t);
-      }
-      return *exact_;
-    }
-
-  private:
-    friend class Progressive_medial_axis_filtered_traits_2;
-    Interval approx_;
-    PMA2::internal::Time_kind kind_ = PMA2::internal::TIME_ZERO;
-    Site_2 c_, s_[3];
-    PMA2::internal::Triple_relations rel_;
-    mutable std::shared_ptr<Exact_FT> exact_;
-  };
-
-  Orientation_2 orientation_2_object() const { return Kernel().orientation_2_object(); }
-
   /// The precisions, in bits, of the MPFR stages.
   static constexpr mpfr_prec_t mpfr_precisions[2] = {256, 2048};
 
 private:
   // Evaluates a time: double intervals, MPFR intervals, exactly.
-  static bool make_time(PMA2::internal::Time_kind kind, const Site_2& c, const Site_2* s,
-                        Event_time_2& t)
+  static bool time(PMA2::internal::Time_kind kind, const Site_2& line, const Site_2* s, Event_time_2& t)
   {
     t.kind_ = kind;
-    t.c_ = c;
+    t.c_ = line;
     if(s != nullptr) {
       for(int i = 0; i < 3; ++i) t.s_[i] = s[i];
-      t.rel_ = PMA2::internal::triple_relations<Kernel>(s);
+      t.rel_ = PMA2::internal::triple_relations<CK>(s);
     }
     t.exact_.reset();
     ++filter_statistics().interval_evaluations;
@@ -419,7 +480,7 @@ private:
       try {
         Interval v;
         PMA2::internal::To_nt_convert<Interval> cv;
-        bool ok = PMA2::internal::evaluate_time<Interval>(kind, c, t.s_, t.rel_, cv, v);
+        bool ok = PMA2::internal::evaluate_time<Interval>(kind, line, t.s_, t.rel_, cv, v);
         if(!ok)
           return false;
         if(CGAL_NTS is_finite(v.inf()) && CGAL_NTS is_finite(v.sup())) {
@@ -445,183 +506,126 @@ private:
     typename PMA2::internal::Exact_scope_for<Exact_FT>::Type scope;
     Exact_FT e(0);
     PMA2::internal::To_nt_convert<Exact_FT> cv;
-    if(!PMA2::internal::evaluate_time<Exact_FT>(kind, c, t.s_, t.rel_, cv, e))
+    if(!PMA2::internal::evaluate_time<Exact_FT>(kind, line, t.s_, t.rel_, cv, e))
       return false;
     t.exact_ = std::make_shared<Exact_FT>(e);
     t.approx_ = CGAL::to_interval(e);
     return true;
   }
 
-public:
-  struct Compute_start_time_2 {
-    Event_time_2 operator()(const Site_2& c) const
-    {
-      Event_time_2 t;
-      make_time(PMA2::internal::TIME_ZERO, c, nullptr, t);
-      return t;
-    }
-  };
-  struct Compute_end_time_2 {
-    Event_time_2 operator()(const Site_2& c) const
-    {
-      Event_time_2 t;
-      make_time(PMA2::internal::TIME_END, c, nullptr, t);
-      return t;
-    }
-  };
-  Compute_start_time_2 compute_start_time_2_object() const { return Compute_start_time_2(); }
-  Compute_end_time_2 compute_end_time_2_object() const { return Compute_end_time_2(); }
+  // The foot of a point on the separator, exactly.
+  static Event_time_2 foot_time(const Site_2& line, const Point_2& p)
+  {
+    Event_time_2 t;
+    t.kind_ = PMA2::internal::TIME_SWITCH;
+    t.c_ = line;
+    Exact_FT e = (Exact_FT(line.q.x()) - Exact_FT(line.p.x())) * (Exact_FT(p.x()) - Exact_FT(line.p.x())) +
+                 (Exact_FT(line.q.y()) - Exact_FT(line.p.y())) * (Exact_FT(p.y()) - Exact_FT(line.p.y()));
+    t.exact_ = std::make_shared<Exact_FT>(e);
+    t.approx_ = CGAL::to_interval(e);
+    return t;
+  }
 
-  struct Compute_switch_time_2 {
-    bool operator()(const Site_2& line, const Site_2& c, const Site_2& a, const Site_2& b,
-                    Event_time_2& t) const
-    {
-      Site_2 s[3] = {c, a, b};
-      return make_time(PMA2::internal::switch_time_kind(line, a, b), line, s, t);
-    }
-  };
-  /// The foot of a point on the separator, exactly.
-  struct Compute_foot_time_2 {
-    Event_time_2 operator()(const Site_2& line, const Point_2& p) const
-    {
-      Event_time_2 t;
-      t.kind_ = PMA2::internal::TIME_SWITCH;
-      t.c_ = line;
-      Exact_FT e = (Exact_FT(line.q.x()) - Exact_FT(line.p.x())) * (Exact_FT(p.x()) - Exact_FT(line.p.x())) +
-                   (Exact_FT(line.q.y()) - Exact_FT(line.p.y())) * (Exact_FT(p.y()) - Exact_FT(line.p.y()));
-      t.exact_ = std::make_shared<Exact_FT>(e);
-      t.approx_ = CGAL::to_interval(e);
-      return t;
-    }
-  };
-  Compute_foot_time_2 compute_foot_time_2_object() const { return Compute_foot_time_2(); }
-  Compute_switch_time_2 compute_switch_time_2_object() const { return Compute_switch_time_2(); }
-
-  struct Compute_vanishing_time_2 {
-    bool operator()(const Site_2& c, const Site_2& a, const Site_2& b, const Site_2& d,
-                    Event_time_2& t) const
-    {
-      Site_2 s[3] = {a, b, d};
-      return make_time(PMA2::internal::TIME_VANISH, c, s, t);
-    }
-  };
-  Compute_vanishing_time_2 compute_vanishing_time_2_object() const { return Compute_vanishing_time_2(); }
-
-  struct Compare_event_time_2 {
-    Comparison_result operator()(const Event_time_2& a, const Event_time_2& b) const
-    {
-      Uncertain<Comparison_result> r = CGAL::compare(a.approx(), b.approx());
-      if(is_certain(r))
-        return get_certain(r);
-      // the two ends of one separator
-      if(a.kind_ == b.kind_ && a.kind_ <= PMA2::internal::TIME_END && a.c_ == b.c_)
-        return EQUAL;
-      if(!a.exact_ || !b.exact_) {
-        for(mpfr_prec_t p : mpfr_precisions) {
-          PMA2::internal::Mpfr_precision_scope scope(p);
-          try {
-            Mpfr va, vb;
-            if(a.mpfr(va) && b.mpfr(vb)) {
-              Uncertain<Comparison_result> m = compare(va, vb);
-              if(is_certain(m)) {
-                ++filter_statistics().mpfr_comparisons;
-                return get_certain(m);
-              }
-            }
-          } catch(Uncertain_conversion_exception&) {
-          }
-        }
-      }
-      ++filter_statistics().exact_comparisons;
-      typename PMA2::internal::Exact_scope_for<Exact_FT>::Type scope;
-      return CGAL::compare(a.exact(), b.exact());
-    }
-  };
-  Compare_event_time_2 compare_event_time_2_object() const { return Compare_event_time_2(); }
-
-  struct Is_event_in_past_2 {
-    bool operator()(const Event_time_2& t, const Event_time_2& now, const Site_2&) const
-    {
-      return Compare_event_time_2()(t, now) == SMALLER;
-    }
-  };
-  Is_event_in_past_2 is_event_in_past_2_object() const { return Is_event_in_past_2(); }
-
-  /// The disk tangent to three sites, rounded to double.
-  struct Construct_medial_disk_2 {
-    bool operator()(const Site_2& a, const Site_2& b, const Site_2& c,
-                    Point_2& centre, FT& radius) const
-    {
-      Site_2 s[3] = {a, b, c};
-      PMA2::internal::Triple_relations rel = PMA2::internal::triple_relations<Kernel>(s);
-      ++filter_statistics().interval_evaluations;
-      bool branches_decided = false;
-      {
-        Protect_FPU_rounding<true> protection;
-        try {
-          PMA2::internal::Circle_nt<Interval> circle;
-          if(!disk<Interval>(s, rel, circle))
-            return false;
-          branches_decided = true;
-          if(circle.x.is_point() && circle.y.is_point() && circle.r.is_point()) {
-            centre = Point_2(circle.x.inf(), circle.y.inf());
-            radius = circle.r.inf();
-            return true;
-          }
-        } catch(Uncertain_conversion_exception&) {
-        }
-      }
-      if(branches_decided) {
-        // The intervals took every branch: the same computation in
-        // double-double arithmetic (about 106 bits), rounded to double, gives
-        // the exact disk correctly rounded in all but ill-conditioned cases.
-        ++filter_statistics().double_double_evaluations;
-        PMA2::internal::Circle_nt<PMA2::internal::Double_double> circle;
-        if(disk<PMA2::internal::Double_double>(s, rel, circle)) {
-          centre = Point_2(circle.x.to_double(), circle.y.to_double());
-          radius = circle.r.to_double();
-          return true;
-        }
-      }
-      ++filter_statistics().mpfr_evaluations;
+  static Comparison_result compare_times(const Event_time_2& a, const Event_time_2& b)
+  {
+    Uncertain<Comparison_result> r = CGAL::compare(a.approx(), b.approx());
+    if(is_certain(r))
+      return get_certain(r);
+    // the two ends of one separator
+    if(a.kind_ == b.kind_ && a.kind_ <= PMA2::internal::TIME_END && a.c_ == b.c_)
+      return EQUAL;
+    if(!a.exact_ || !b.exact_) {
       for(mpfr_prec_t p : mpfr_precisions) {
         PMA2::internal::Mpfr_precision_scope scope(p);
         try {
-          PMA2::internal::Circle_nt<Mpfr> circle;
-          if(!disk<Mpfr>(s, rel, circle))
-            return false;
-          if(circle.x.rounds_to_one_double() && circle.y.rounds_to_one_double() &&
-             circle.r.rounds_to_one_double()) {
-            centre = Point_2(circle.x.midpoint(), circle.y.midpoint());
-            radius = circle.r.midpoint();
-            return true;
+          Mpfr va, vb;
+          if(a.mpfr(va) && b.mpfr(vb)) {
+            Uncertain<Comparison_result> m = compare(va, vb);
+            if(is_certain(m)) {
+              ++filter_statistics().mpfr_comparisons;
+              return get_certain(m);
+            }
           }
         } catch(Uncertain_conversion_exception&) {
         }
       }
-      ++filter_statistics().exact_evaluations;
-      typename PMA2::internal::Exact_scope_for<Exact_FT>::Type scope;
-      PMA2::internal::Circle_nt<Exact_FT> circle;
-      if(!disk<Exact_FT>(s, rel, circle))
-        return false;
-      centre = Point_2(CGAL::to_double(circle.x), CGAL::to_double(circle.y));
-      radius = CGAL::to_double(circle.r);
-      return true;
     }
+    ++filter_statistics().exact_comparisons;
+    typename PMA2::internal::Exact_scope_for<Exact_FT>::Type scope;
+    return CGAL::compare(a.exact(), b.exact());
+  }
 
-  private:
-    template <class NT>
-    static bool disk(const Site_2* s, const PMA2::internal::Triple_relations& rel,
-                     PMA2::internal::Circle_nt<NT>& circle)
+  static bool in_past(const Event_time_2& t, const Event_time_2& now, const Site_2&)
+  {
+    return compare_times(t, now) == SMALLER;
+  }
+
+  // The disk tangent to three sites, rounded to double.
+  static bool disk(const Site_2* s, Point_2& centre, FT& radius)
+  {
+    PMA2::internal::Triple_relations rel = PMA2::internal::triple_relations<CK>(s);
+    ++filter_statistics().interval_evaluations;
+    bool branches_decided = false;
     {
-      PMA2::internal::To_nt_convert<NT> cv;
-      PMA2::internal::Site_nt<NT> sn[3] = {PMA2::internal::site_nt<NT>(s[0], cv),
-                                           PMA2::internal::site_nt<NT>(s[1], cv),
-                                           PMA2::internal::site_nt<NT>(s[2], cv)};
-      return PMA2::internal::medial_circle(sn, rel, circle);
+      Protect_FPU_rounding<true> protection;
+      try {
+        PMA2::internal::Circle_nt<Interval> circle;
+        if(!disk_nt<Interval>(s, rel, circle))
+          return false;
+        branches_decided = true;
+        if(circle.x.is_point() && circle.y.is_point() && circle.r.is_point()) {
+          centre = Point_2(circle.x.inf(), circle.y.inf());
+          radius = circle.r.inf();
+          return true;
+        }
+      } catch(Uncertain_conversion_exception&) {
+      }
     }
-  };
-  Construct_medial_disk_2 construct_medial_disk_2_object() const { return Construct_medial_disk_2(); }
+    if(branches_decided) {
+      // The intervals took every branch: the same computation in
+      // double-double arithmetic (about 106 bits), rounded to double, gives
+      // the exact disk correctly rounded in all but ill-conditioned cases.
+      ++filter_statistics().double_double_evaluations;
+      PMA2::internal::Circle_nt<PMA2::internal::Double_double> circle;
+      if(disk_nt<PMA2::internal::Double_double>(s, rel, circle)) {
+        centre = Point_2(circle.x.to_double(), circle.y.to_double());
+        radius = circle.r.to_double();
+        return true;
+      }
+    }
+    ++filter_statistics().mpfr_evaluations;
+    for(mpfr_prec_t p : mpfr_precisions) {
+      PMA2::internal::Mpfr_precision_scope scope(p);
+      try {
+        PMA2::internal::Circle_nt<Mpfr> circle;
+        if(!disk_nt<Mpfr>(s, rel, circle))
+          return false;
+        if(circle.x.rounds_to_one_double() && circle.y.rounds_to_one_double() && circle.r.rounds_to_one_double()) {
+          centre = Point_2(circle.x.midpoint(), circle.y.midpoint());
+          radius = circle.r.midpoint();
+          return true;
+        }
+      } catch(Uncertain_conversion_exception&) {
+      }
+    }
+    ++filter_statistics().exact_evaluations;
+    typename PMA2::internal::Exact_scope_for<Exact_FT>::Type scope;
+    PMA2::internal::Circle_nt<Exact_FT> circle;
+    if(!disk_nt<Exact_FT>(s, rel, circle))
+      return false;
+    centre = Point_2(CGAL::to_double(circle.x), CGAL::to_double(circle.y));
+    radius = CGAL::to_double(circle.r);
+    return true;
+  }
+
+  template <class NT>
+  static bool disk_nt(const Site_2* s, const PMA2::internal::Triple_relations& rel, PMA2::internal::Circle_nt<NT>& circle)
+  {
+    PMA2::internal::To_nt_convert<NT> cv;
+    PMA2::internal::Site_nt<NT> sn[3] = {PMA2::internal::site_nt<NT>(s[0], cv), PMA2::internal::site_nt<NT>(s[1], cv),
+                                         PMA2::internal::site_nt<NT>(s[2], cv)};
+    return PMA2::internal::medial_circle(sn, rel, circle);
+  }
 };
 
 } // namespace CGAL

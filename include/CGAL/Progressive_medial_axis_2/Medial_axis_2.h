@@ -289,6 +289,17 @@ public:
 
   const std::vector<Point_2>& points() const { return points_; }
 
+  /// The rings of the input polygon, as internal point indices in input order.
+  std::vector<std::vector<int> > input_rings() const
+  {
+    std::vector<std::vector<int> > rings;
+    for(int i = 0; i < int(info_.size()); ++i) {
+      if(info_[i].index == 0) rings.emplace_back();
+      rings.back().push_back(i);
+    }
+    return rings;
+  }
+
   /// The point and radius of vertex `v` of the half-edge structure
   /// (computed on first use; not thread-safe).
   const Point_2& vertex_point(int v) const

@@ -60,12 +60,21 @@ inline std::string xml_escape(const std::string& s)
 \ingroup PkgProgressiveMedialAxis2IO
 Draws the shape of `ma` and its medial axis as an SVG picture of about
 `width` pixels: the shape filled, straight curves in blue, parabolic arcs in
-red, branch points as dots.  `title` is written in a corner.
+red, branch points as dots.  `title` is written in a corner.  With
+`show_input`, the outline of the whole input polygon is drawn in grey behind
+(useful for the steps of a progressive computation).
 */
 template <class Medial_axis>
-void write_svg(std::ostream& out, const Medial_axis& ma, const std::string& title, double width = 1000)
+void write_svg(std::ostream& out, const Medial_axis& ma, const std::string& title, double width = 1000,
+               bool show_input = false)
 {
   internal::Box box = internal::shape_box(ma);
+  if(show_input)
+    for(const auto& r : ma.input_rings())
+      for(int i : r) {
+        auto p = Medial_axis::to_xy(ma.points()[i]);
+        box.add(p.first, p.second);
+      }
   double w = box.x1 - box.x0, h = box.y1 - box.y0;
   if(!(w > 0)) w = 1;
   if(!(h > 0)) h = 1;
@@ -79,6 +88,18 @@ void write_svg(std::ostream& out, const Medial_axis& ma, const std::string& titl
   out << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << W << "\" height=\"" << H
       << "\" viewBox=\"0 0 " << W << ' ' << H << "\">\n";
   out << "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
+  if(show_input) {
+    out << "<path fill=\"#f4f4f4\" stroke=\"#b0b0b0\" stroke-width=\"0.6\" fill-rule=\"evenodd\" d=\"";
+    for(const auto& c : ma.input_rings()) {
+      for(std::size_t i = 0; i < c.size(); ++i) {
+        auto p = Medial_axis::to_xy(ma.points()[c[i]]);
+        std::snprintf(buf, sizeof(buf), "%c%.2f %.2f", i == 0 ? 'M' : 'L', X(p.first), Y(p.second));
+        out << buf;
+      }
+      out << 'Z';
+    }
+    out << "\"/>\n";
+  }
   out << "<path fill=\"#e8eef7\" stroke=\"#203040\" stroke-width=\"0.8\" fill-rule=\"evenodd\" d=\"";
   for(const auto& c : ma.boundary_cycles()) {
     for(std::size_t i = 0; i < c.size(); ++i) {
