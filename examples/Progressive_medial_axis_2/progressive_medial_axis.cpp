@@ -121,9 +121,10 @@ void print_filter_statistics(const CGAL::Progressive_medial_axis_filtered_traits
 {
   const auto& f = CGAL::Progressive_medial_axis_filtered_traits_2<CK, EK>::filter_statistics();
   std::printf("filter_interval_evaluations %zu\nfilter_double_double_evaluations %zu\nfilter_mpfr_evaluations %zu\n"
-              "filter_exact_evaluations %zu\nfilter_mpfr_comparisons %zu\nfilter_exact_comparisons %zu\n",
-              f.interval_evaluations, f.double_double_evaluations, f.mpfr_evaluations, f.exact_evaluations,
-              f.mpfr_comparisons, f.exact_comparisons);
+              "filter_rational_evaluations %zu\nfilter_exact_evaluations %zu\nfilter_mpfr_comparisons %zu\n"
+              "filter_rational_comparisons %zu\nfilter_exact_comparisons %zu\nfilter_exact_ties %zu\n",
+              f.interval_evaluations, f.double_double_evaluations, f.mpfr_evaluations, f.rational_evaluations,
+              f.exact_evaluations, f.mpfr_comparisons, f.rational_comparisons, f.exact_comparisons, f.exact_ties);
 }
 
 template <class Traits>

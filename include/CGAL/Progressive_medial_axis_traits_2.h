@@ -7,6 +7,7 @@
 #include <CGAL/Progressive_medial_axis_2/internal/Medial_constructions.h>
 #include <CGAL/Progressive_medial_axis_2/internal/Mpfr_interval.h>
 #include <CGAL/Progressive_medial_axis_2/internal/Double_double.h>
+#include <CGAL/Progressive_medial_axis_2/internal/One_root_rational.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Simple_cartesian.h>
@@ -80,7 +81,8 @@ Site_nt<NT> site_nt(const Site_& s, const Convert& cv)
   return r;
 }
 
-enum Time_kind : unsigned char { TIME_ZERO, TIME_END, TIME_SWITCH, TIME_VANISH };
+/// TIME_FOOT: the foot on the separator of the point of site s[0].
+enum Time_kind : unsigned char { TIME_ZERO, TIME_END, TIME_SWITCH, TIME_VANISH, TIME_FOOT };
 
 /// A vertex of the separator's cell whose disk passes through an endpoint of
 /// the separator (a reflex vertex there) lies on the normal at that endpoint:
@@ -95,11 +97,15 @@ Time_kind switch_time_kind(const Site_& line, const Site_& a, const Site_& b)
 
 /// Evaluates an event time in number type NT.  Returns false when a
 /// vanishing event does not exist (for a switch time, when the disk cannot
-/// be built: the caller then falls back on the stored vertex).
+/// be built: the caller then falls back on the stored vertex).  With `rad`,
+/// the time is `t + sqrt(*rad)` (the square root of a vanishing time is not
+/// taken; *rad = 0 for the other kinds).
 template <class NT, class Site_, class Convert>
 bool evaluate_time(Time_kind kind, const Site_& c, const Site_* s, const Triple_relations& rel,
-                   const Convert& cv, NT& t)
+                   const Convert& cv, NT& t, NT* rad = nullptr)
 {
+  if(rad != nullptr)
+    *rad = NT(0);
   NT px = cv(c.p.x()), py = cv(c.p.y()), qx = cv(c.q.x()), qy = cv(c.q.y());
   switch(kind) {
   case TIME_ZERO:
@@ -107,6 +113,9 @@ bool evaluate_time(Time_kind kind, const Site_& c, const Site_* s, const Triple_
     return true;
   case TIME_END:
     t = (qx - px) * (qx - px) + (qy - py) * (qy - py);
+    return true;
+  case TIME_FOOT:
+    t = (qx - px) * (cv(s[0].p.x()) - px) + (qy - py) * (cv(s[0].p.y()) - py);
     return true;
   default:
     break;
@@ -123,6 +132,8 @@ bool evaluate_time(Time_kind kind, const Site_& c, const Site_* s, const Triple_
   const double tolerance = std::is_floating_point<NT>::value ? 1e-12 : 0.0;
   if(!touches_segments(sn, rel, circle, tolerance))
     return false;
+  if(rad != nullptr)
+    return chord_far_end_parts(px, py, qx, qy, circle, t, *rad);
   return chord_far_end(px, py, qx, qy, circle, t);
 }
 
@@ -377,6 +388,32 @@ public:
     return evaluate_time<Mpfr>(kind_, c_, s_, rel_, cv, t);
   }
 
+  /// Evaluates the time as alpha + sqrt(rho) in one-root numbers; throws
+  /// Not_one_root if the computation leaves that form.
+  bool evaluate_one_root(One_root_sqrt& t) const
+  {
+    To_nt_convert<One_root_rational> cv;
+    return evaluate_time<One_root_rational>(kind_, c_, s_, rel_, cv, t.alpha, &t.rho);
+  }
+
+  /// The time as alpha + sqrt(rho) in one-root numbers, or null if it does
+  /// not have that form.
+  const One_root_sqrt* rational() const
+  {
+    if(rational_state_ == 0) {
+      rational_state_ = -1;
+      try {
+        One_root_sqrt t;
+        if(evaluate_one_root(t)) {
+          rational_ = std::make_shared<One_root_sqrt>(t);
+          rational_state_ = 1;
+        }
+      } catch(Not_one_root&) {
+      }
+    }
+    return rational_state_ > 0 ? rational_.get() : nullptr;
+  }
+
   /// The exact time (progressive evaluation off, see Core_exact_scope).
   const Exact_FT& exact() const
   {
@@ -395,6 +432,9 @@ public:
   Site_2 c_, s_[3];
   Triple_relations rel_;
   mutable std::shared_ptr<Exact_FT> exact_;
+  mutable std::shared_ptr<One_root_sqrt> rational_;
+  mutable signed char rational_state_ = 0; // 0 unknown, 1 rational_ holds it, -1 not rational
+  mutable std::shared_ptr<char> tie_;       // shared by times found exactly equal
 };
 
 } // namespace internal
@@ -406,9 +446,12 @@ public:
 The filtered traits model: every decision is exact, and almost all are
 taken in floating point.  A decision is evaluated first in double interval
 arithmetic (`Interval_nt`), then, when the interval cannot decide, in MPFR
-interval arithmetic at 256 and at 2048 bits, and only then exactly with the
-number type of `EK` (default `CORE::Expr`, with its progressive evaluation
-off), which in practice happens only for exact ties of degenerate inputs.
+interval arithmetic at 256 and at 2048 bits.  What the intervals cannot
+decide is an exact tie (equal event times, a zero discriminant).  It is then
+decided exactly in numbers alpha + sqrt(rho), where alpha and rho are
+a + b sqrt(D) with rational a, b, D (GMP), when the computation keeps that
+form, as is usual with axis-parallel edges (mazes, CAD parts), and otherwise with the number type of `EK` (default `CORE::Expr`,
+with its progressive evaluation off), which is much slower.
 
 Constructed vertices: the double intervals decide the branches of the
 construction (which of two tangent circles, ...); the disk is then computed
@@ -450,9 +493,12 @@ public:
     std::size_t interval_evaluations = 0;      ///< times and disks evaluated in double intervals
     std::size_t double_double_evaluations = 0; ///< disks constructed in double-double arithmetic
     std::size_t mpfr_evaluations = 0;          ///< ... that needed MPFR intervals
+    std::size_t rational_evaluations = 0;      ///< ... that were decided in exact rational arithmetic
     std::size_t exact_evaluations = 0;         ///< ... that needed the exact number type
     std::size_t mpfr_comparisons = 0;          ///< comparisons of times decided by MPFR intervals
-    std::size_t exact_comparisons = 0;         ///< comparisons of times decided exactly
+    std::size_t rational_comparisons = 0;      ///< ... decided in exact rational arithmetic
+    std::size_t exact_comparisons = 0;         ///< ... decided with the exact number type
+    std::size_t exact_ties = 0;                ///< comparisons that found two times equal (one-root or exact)
   };
   static Filter_statistics& filter_statistics()
   {
@@ -474,6 +520,9 @@ private:
       t.rel_ = PMA2::internal::triple_relations<CK>(s);
     }
     t.exact_.reset();
+    t.rational_.reset();
+    t.rational_state_ = 0;
+    t.tie_.reset();
     ++filter_statistics().interval_evaluations;
     {
       Protect_FPU_rounding<true> protection;
@@ -490,9 +539,27 @@ private:
       } catch(Uncertain_conversion_exception&) {
       }
     }
+    // MPFR intervals at the first precision, exact one-root numbers, MPFR
+    // intervals at the second precision (what the first cannot decide is
+    // almost always an exact tie), then the exact number type
     ++filter_statistics().mpfr_evaluations;
-    for(mpfr_prec_t p : mpfr_precisions) {
-      PMA2::internal::Mpfr_precision_scope scope(p);
+    for(int stage = 0; stage < 3; ++stage) {
+      if(stage == 1) {
+        try {
+          PMA2::internal::One_root_sqrt v;
+          if(!t.evaluate_one_root(v))
+            return false;
+          ++filter_statistics().rational_evaluations;
+          t.rational_ = std::make_shared<PMA2::internal::One_root_sqrt>(v);
+          t.rational_state_ = 1;
+          t.approx_ = v.to_interval();
+          return true;
+        } catch(PMA2::internal::Not_one_root&) {
+          t.rational_state_ = -1;
+        }
+        continue;
+      }
+      PMA2::internal::Mpfr_precision_scope scope(mpfr_precisions[stage / 2]);
       try {
         Mpfr v;
         if(!t.mpfr(v))
@@ -513,16 +580,12 @@ private:
     return true;
   }
 
-  // The foot of a point on the separator, exactly.
+  // The foot of a point on the separator.
   static Event_time_2 foot_time(const Site_2& line, const Point_2& p)
   {
     Event_time_2 t;
-    t.kind_ = PMA2::internal::TIME_SWITCH;
-    t.c_ = line;
-    Exact_FT e = (Exact_FT(line.q.x()) - Exact_FT(line.p.x())) * (Exact_FT(p.x()) - Exact_FT(line.p.x())) +
-                 (Exact_FT(line.q.y()) - Exact_FT(line.p.y())) * (Exact_FT(p.y()) - Exact_FT(line.p.y()));
-    t.exact_ = std::make_shared<Exact_FT>(e);
-    t.approx_ = CGAL::to_interval(e);
+    const Site_2 s[3] = {Site_2::point(p), Site_2::point(p), Site_2::point(p)};
+    time(PMA2::internal::TIME_FOOT, line, s, t);
     return t;
   }
 
@@ -534,9 +597,24 @@ private:
     // the two ends of one separator
     if(a.kind_ == b.kind_ && a.kind_ <= PMA2::internal::TIME_END && a.c_ == b.c_)
       return EQUAL;
+    // already found equal
+    if(a.tie_ && a.tie_ == b.tie_)
+      return EQUAL;
     if(!a.exact_ || !b.exact_) {
-      for(mpfr_prec_t p : mpfr_precisions) {
-        PMA2::internal::Mpfr_precision_scope scope(p);
+      for(int stage = 0; stage < 3; ++stage) {
+        if(stage == 1) {
+          if(const PMA2::internal::One_root_sqrt* ra = a.rational())
+            if(const PMA2::internal::One_root_sqrt* rb = b.rational()) {
+              try {
+                const Comparison_result res = Comparison_result(int(sign_of_difference(*ra, *rb)));
+                ++filter_statistics().rational_comparisons;
+                return tie(a, b, res);
+              } catch(PMA2::internal::Not_one_root&) {
+              }
+            }
+          continue;
+        }
+        PMA2::internal::Mpfr_precision_scope scope(mpfr_precisions[stage / 2]);
         try {
           Mpfr va, vb;
           if(a.mpfr(va) && b.mpfr(vb)) {
@@ -552,7 +630,19 @@ private:
     }
     ++filter_statistics().exact_comparisons;
     typename PMA2::internal::Exact_scope_for<Exact_FT>::Type scope;
-    return CGAL::compare(a.exact(), b.exact());
+    return tie(a, b, CGAL::compare(a.exact(), b.exact()));
+  }
+
+  // Remembers that a and b are equal, so that comparing them again is immediate.
+  static Comparison_result tie(const Event_time_2& a, const Event_time_2& b, Comparison_result r)
+  {
+    if(r == EQUAL) {
+      ++filter_statistics().exact_ties;
+      if(!a.tie_)
+        a.tie_ = std::make_shared<char>(0);
+      b.tie_ = a.tie_;
+    }
+    return r;
   }
 
   static bool in_past(const Event_time_2& t, const Event_time_2& now, const Site_2&)
@@ -593,9 +683,24 @@ private:
         return true;
       }
     }
+    // MPFR intervals, exact one-root numbers, MPFR intervals at the second
+    // precision, then the exact number type (as for times)
     ++filter_statistics().mpfr_evaluations;
-    for(mpfr_prec_t p : mpfr_precisions) {
-      PMA2::internal::Mpfr_precision_scope scope(p);
+    for(int stage = 0; stage < 3; ++stage) {
+      if(stage == 1) {
+        try {
+          PMA2::internal::Circle_nt<PMA2::internal::One_root_rational> circle;
+          if(!disk_nt<PMA2::internal::One_root_rational>(s, rel, circle))
+            return false;
+          ++filter_statistics().rational_evaluations;
+          centre = Point_2(circle.x.to_double(), circle.y.to_double());
+          radius = circle.r.to_double();
+          return true;
+        } catch(PMA2::internal::Not_one_root&) {
+        }
+        continue;
+      }
+      PMA2::internal::Mpfr_precision_scope scope(mpfr_precisions[stage / 2]);
       try {
         PMA2::internal::Circle_nt<Mpfr> circle;
         if(!disk_nt<Mpfr>(s, rel, circle))

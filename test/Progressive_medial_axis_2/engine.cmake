@@ -17,3 +17,7 @@ endif()
 
 # compare_pairs SHAPE OURS ORACLE: used by scripts/check_oracle.sh.
 pma_add_test_program(compare_pairs)
+
+# The exact one-root numbers that decide ties in the filtered traits.
+pma_add_test_program(test_number_types)
+add_test(NAME number_types COMMAND test_number_types)

@@ -398,17 +398,18 @@ bool touches_segments(const Site_nt<NT> s[3], const Triple_relations& rel, const
 
 /// Position, along the separator from `P` to `Q`, of the point where the
 /// retracting tip meets the circle: the end of the chord nearer to `Q`,
-/// scaled by |PQ|^2 (0 at P, |PQ|^2 at Q).  False if the circle misses the line.
+/// scaled by |PQ|^2 (0 at P, |PQ|^2 at Q), as `alpha + sqrt(rad)`.  False if
+/// the circle misses the line.
 template <class NT>
-bool chord_far_end(const NT& px, const NT& py, const NT& qx, const NT& qy,
-                   const Circle_nt<NT>& c, NT& t)
+bool chord_far_end_parts(const NT& px, const NT& py, const NT& qx, const NT& qy,
+                         const Circle_nt<NT>& c, NT& alpha, NT& rad)
 {
   NT dx = qx - px, dy = qy - py;
   NT vx = c.x - px, vy = c.y - py;
   NT d2 = dx * dx + dy * dy;
   NT h = cross2(dx, dy, vx, vy);
   NT r2d2 = c.r * c.r * d2;
-  NT rad = r2d2 - h * h;
+  rad = r2d2 - h * h;
   if(rad < 0) {
     // With floating-point numbers, a circle through an endpoint of the
     // separator or tangent to it (an exact tie, common on integer grids)
@@ -417,7 +418,19 @@ bool chord_far_end(const NT& px, const NT& py, const NT& qx, const NT& qy,
       return false;
     rad = NT(0);
   }
-  t = dx * vx + dy * vy + nt_sqrt_nonnegative(rad);
+  alpha = dx * vx + dy * vy;
+  return true;
+}
+
+/// The same position as one number.
+template <class NT>
+bool chord_far_end(const NT& px, const NT& py, const NT& qx, const NT& qy,
+                   const Circle_nt<NT>& c, NT& t)
+{
+  NT alpha, rad;
+  if(!chord_far_end_parts(px, py, qx, qy, c, alpha, rad))
+    return false;
+  t = alpha + nt_sqrt_nonnegative(rad);
   return true;
 }
 
