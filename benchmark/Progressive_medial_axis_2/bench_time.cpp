@@ -1,39 +1,64 @@
 // bench_time: running time and peak memory of our medial axis and of its
 // peers, on polygon files, in one run.
 //
-//   bench_time [--runs N] [--timeout SECONDS] [--methods m1,m2,...] FILE.wkt...
+//   bench_time [--runs N] [--timeout SECONDS] [--exact-timeout SECONDS]
+//              [--methods m1,m2,...] [--no-baseline] [--nv-dump DIR] FILE.wkt...
 //
-// Methods:
+// Methods (default: all, in this order):
 //   pma_filtered      our full progressive sequence, filtered traits (exact decisions),
 //                     then the coordinates of every vertex of the final axis
 //   pma_epick         the same with the double-precision traits
+//   pma_exact         the same with the CORE::Expr traits (Simple_cartesian<CORE::Expr>)
 //   sdg               Segment_Delaunay_graph_2, filtered traits without intersections
 //                     over Simple_cartesian<double> (construction of the diagram)
 //   sdg_hierarchy     the same with Segment_Delaunay_graph_hierarchy_2
+//   sdg_extract       extraction of the interior medial axis from an already built `sdg`
+//                     diagram (its construction is NOT in this row's time; its median is
+//                     in the note as build_median_seconds): every interior Voronoi edge
+//                     with its two generators and its two end points in double
+//                     (construct_svd_vertex_2 of the SDG's traits); inside/outside decided
+//                     combinatorially (bench_common.h, Sdg_interior)
+//   sdg_exact         Segment_Delaunay_graph_2 with Segment_Delaunay_graph_traits_2 over
+//                     Simple_cartesian<CORE::Expr>, Field_with_sqrt_tag (construction)
+//   boost_voronoi     boost::polygon::construct_voronoi on the polygon's segments, the
+//                     coordinates scaled to 32-bit integers by the smallest 10^k (k = 0..9)
+//                     at which they are all integral (construction of the diagram);
+//                     "not applicable" when there is no such k
+//
+// Our one-shot medial axis (medial_axis_2) is the full progressive sequence (region growing
+// to the whole shape; there is no separate one-shot algorithm), so the pma_* rows are both.
 //
 // Every measurement runs in a child process (fork), so that its peak memory
-// (maxrss) is its own and a time limit can stop it.  Times are medians of
-// N runs.  Output: one tab-separated row per file and method:
-//   shape vertices holes method median_seconds runs peak_rss_mb status
-// then, for pma methods, a row "nv" with the distribution of n_v per merge.
+// (maxrss) is its own and a time limit can stop it (--timeout, default 600 s;
+// --exact-timeout, default the same, for pma_exact and sdg_exact); the first run
+// that fails or does not finish in time ends the method's runs, and a method that
+// did not finish in time is not run again on files with as many vertices or more
+// (status "not run: did not finish in T s on N vertices").  Times are medians of N runs.
+// pma_filtered is always measured (first, for every file) unless --no-baseline,
+// so that every row has a ratio to it taken in the same invocation.
+//
+// Output: one tab-separated row per file and method:
+//   shape vertices holes method median_seconds runs peak_rss_mb status note ratio_to_pma_filtered
+// median_seconds is -1 when no run finished; ratio_to_pma_filtered is
+// median_seconds / (pma_filtered's median_seconds for the same file in this
+// invocation), "-" when either is missing.  The note of pma methods has the
+// number of medial curves and the distribution of n_v (the largest number of
+// live vanishing candidates of a merge) as n_v:count.
+//
+// --nv-dump DIR: for pma_filtered, writes DIR/<shape>.nv.txt, one line "step n_v" per
+// refinement step (step 1 is the first merge).
 
 #include <CGAL/Progressive_medial_axis_2.h>
-#include <CGAL/Progressive_medial_axis_2/IO/polygon_io.h>
 
-#include <CGAL/Simple_cartesian.h>
-#include <CGAL/Segment_Delaunay_graph_2.h>
-#include <CGAL/Segment_Delaunay_graph_hierarchy_2.h>
-#include <CGAL/Segment_Delaunay_graph_filtered_traits_2.h>
+#include "bench_common.h"
 
-#include <sys/resource.h>
-#include <sys/wait.h>
-#include <unistd.h>
+#include <boost/polygon/polygon.hpp>
+#include <boost/polygon/voronoi.hpp>
 
 #include <algorithm>
-#include <chrono>
-#include <csignal>
 #include <cstdio>
 #include <cstdlib>
+#include <fstream>
 #include <iostream>
 #include <map>
 #include <sstream>
@@ -42,18 +67,17 @@
 
 namespace {
 
-typedef CGAL::Epick::Point_2 Point;
-typedef std::vector<std::vector<Point> > Rings;
+using namespace pma_bench;
 
-double now()
-{
-  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
-}
+struct Options {
+  std::string nv_dump_dir;
+};
 
-// ---- the methods; each returns its time in seconds and a short note ----
+// ---- the methods; each returns its time in seconds and a short note; `aux`
+// ---- receives a second time (sdg_extract: the construction of the diagram)
 
 template <class Traits>
-double run_pma(const Rings& rings, std::string& note)
+double run_pma(const Rings& rings, std::string& note, const std::string& nv_dump_file)
 {
   typedef CGAL::Progressive_medial_axis_2<Traits> PMA;
   typename PMA::Rings r;
@@ -68,11 +92,11 @@ double run_pma(const Rings& rings, std::string& note)
   double checksum = 0;
   for(const auto& v : pma.medial_axis().vertices()) checksum += CGAL::to_double(v.radius());
   double t = now() - t0;
-  if(!(checksum >= 0)) note = "bad radius";
   const auto& s = pma.statistics();
   std::map<std::uint32_t, std::size_t> hist;
   for(std::uint32_t v : s.queue_per_step) ++hist[v];
   std::ostringstream o;
+  if(!(checksum >= 0)) o << "bad radius;";
   o << "edges=" << pma.medial_axis().number_of_edges() << ";nv_max=" << s.max_queue << ";nv_hist=";
   bool first = true;
   for(const auto& kv : hist) {
@@ -80,126 +104,133 @@ double run_pma(const Rings& rings, std::string& note)
     first = false;
   }
   note = o.str();
+  if(!nv_dump_file.empty()) {
+    std::ofstream out(nv_dump_file);
+    for(std::size_t i = 0; i < s.queue_per_step.size(); ++i) out << (i + 1) << ' ' << s.queue_per_step[i] << '\n';
+    if(!out) throw std::runtime_error("cannot write " + nv_dump_file);
+  }
   return t;
 }
 
 template <class SDG>
 double run_sdg(const Rings& rings, std::string& note)
 {
-  typedef typename SDG::Point_2 P;
-  std::vector<P> points;
-  std::vector<std::pair<std::size_t, std::size_t> > segments;
-  for(const auto& ring : rings) {
-    std::size_t base = points.size();
-    for(const Point& p : ring) points.push_back(P(p.x(), p.y()));
-    for(std::size_t i = 0; i < ring.size(); ++i)
-      segments.emplace_back(base + i, base + (i + 1) % ring.size());
-  }
   double t0 = now();
   SDG sdg;
-  sdg.insert_segments(points, segments.begin(), segments.end());
+  build_sdg(sdg, rings);
   double t = now() - t0;
   note = "vertices=" + std::to_string(sdg.number_of_vertices());
   return t;
 }
 
-typedef CGAL::Simple_cartesian<double> SC;
-typedef CGAL::Segment_Delaunay_graph_filtered_traits_without_intersections_2<SC, CGAL::Field_with_sqrt_tag> Sdg_traits;
-typedef CGAL::Segment_Delaunay_graph_2<Sdg_traits> Sdg;
-typedef CGAL::Segment_Delaunay_graph_hierarchy_2<Sdg_traits> Sdg_hierarchy;
-
-double run_method(const std::string& m, const Rings& rings, std::string& note)
+double run_sdg_extract(const Rings& rings, std::string& note, double& aux)
 {
-  if(m == "pma_filtered") return run_pma<CGAL::Progressive_medial_axis_filtered_traits_2<> >(rings, note);
-  if(m == "pma_epick") return run_pma<CGAL::Progressive_medial_axis_traits_2<CGAL::Epick> >(rings, note);
+  double t0 = now();
+  Sdg sdg;
+  build_sdg(sdg, rings);
+  aux = now() - t0;
+  // the user's extraction, from the built diagram
+  t0 = now();
+  const Polygon_info P = polygon_info(rings);
+  Sdg_interior<Sdg> interior(sdg, P);
+  std::size_t constructions = 0;
+  const std::vector<Extracted_curve> curves = extract_interior(interior, &constructions);
+  const double t = now() - t0;
+  double checksum = 0;
+  for(const Extracted_curve& c : curves) checksum += c.x0 + c.y1;
+  std::ostringstream o;
+  if(!std::isfinite(checksum)) o << "non-finite vertex;";
+  o << "curves=" << curves.size() << ";vertices_constructed=" << constructions
+    << ";segments_walked=" << interior.walked_segments();
+  note = o.str();
+  return t;
+}
+
+typedef boost::polygon::point_data<std::int32_t> Boost_point;
+typedef boost::polygon::segment_data<std::int32_t> Boost_segment;
+
+double run_boost(const Rings& rings, std::string& note)
+{
+  std::vector<std::vector<std::pair<std::int32_t, std::int32_t> > > scaled;
+  const int k = decimal_scale(rings, scaled);
+  if(k < 0) throw std::runtime_error("not applicable");
+  std::vector<Boost_segment> segments;
+  for(const auto& ring : scaled)
+    for(std::size_t i = 0; i < ring.size(); ++i) {
+      const auto& a = ring[i];
+      const auto& b = ring[(i + 1) % ring.size()];
+      segments.push_back(Boost_segment(Boost_point(a.first, a.second), Boost_point(b.first, b.second)));
+    }
+  double t0 = now();
+  boost::polygon::voronoi_diagram<double> vd;
+  boost::polygon::construct_voronoi(segments.begin(), segments.end(), &vd);
+  double t = now() - t0;
+  note = "scale=1e" + std::to_string(k) + ";cells=" + std::to_string(vd.num_cells()) +
+         ";vertices=" + std::to_string(vd.num_vertices()) + ";edges=" + std::to_string(vd.num_edges());
+  return t;
+}
+
+double run_method(const std::string& m, const Rings& rings, std::string& note, double& aux,
+                  const std::string& nv_dump_file)
+{
+  aux = -1;
+  if(m == "pma_filtered") return run_pma<CGAL::Progressive_medial_axis_filtered_traits_2<> >(rings, note, nv_dump_file);
+  if(m == "pma_epick") return run_pma<CGAL::Progressive_medial_axis_traits_2<CGAL::Epick> >(rings, note, "");
+  if(m == "pma_exact")
+    return run_pma<CGAL::Progressive_medial_axis_traits_2<CGAL::Simple_cartesian<CORE::Expr> > >(rings, note, "");
   if(m == "sdg") return run_sdg<Sdg>(rings, note);
   if(m == "sdg_hierarchy") return run_sdg<Sdg_hierarchy>(rings, note);
+  if(m == "sdg_extract") return run_sdg_extract(rings, note, aux);
+  if(m == "sdg_exact") return run_sdg<Sdg_exact>(rings, note);
+  if(m == "boost_voronoi") return run_boost(rings, note);
   throw std::runtime_error("unknown method " + m);
 }
 
+const std::vector<std::string> all_methods = {"pma_filtered", "pma_epick", "pma_exact", "sdg",
+                                              "sdg_hierarchy", "sdg_extract", "sdg_exact", "boost_voronoi"};
+
 struct Measure {
   bool ok = false;
-  double seconds = 0;
+  double seconds = 0, aux = -1;
   double rss_mb = 0;
+  bool timed_out = false;
   std::string note, status;
 };
 
 // Runs one measurement in a child process, with a time limit.
-Measure measure(const std::string& m, const Rings& rings, double timeout)
+Measure measure(const std::string& m, const Rings& rings, double timeout, const std::string& nv_dump_file)
 {
   Measure r;
-  int fd[2];
-  if(pipe(fd) != 0) { r.status = "pipe failed"; return r; }
-  pid_t pid = fork();
-  if(pid == 0) {
-    close(fd[0]);
-    std::string note;
-    double t = -1;
-    try {
-      t = run_method(m, rings, note);
-    } catch(const std::exception& e) {
-      note = std::string("error: ") + e.what();
-    }
-    std::string out = std::to_string(t) + "\n" + note + "\n";
-    if(write(fd[1], out.data(), out.size()) < 0) {}
-    close(fd[1]);
-    _exit(t >= 0 ? 0 : 1);
-  }
-  close(fd[1]);
-  double start = now();
-  int status = 0;
-  struct rusage ru;
-  bool timed_out = false;
-  for(;;) {
-    pid_t w = wait4(pid, &status, WNOHANG, &ru);
-    if(w == pid) break;
-    if(now() - start > timeout) {
-      kill(pid, SIGKILL);
-      wait4(pid, &status, 0, &ru);
-      timed_out = true;
-      break;
-    }
-    usleep(2000);
-  }
-  std::string data;
-  char buf[4096];
-  ssize_t k;
-  while((k = read(fd[0], buf, sizeof(buf))) > 0) data.append(buf, std::size_t(k));
-  close(fd[0]);
-  r.rss_mb = double(ru.ru_maxrss) / 1024.0;
-  if(timed_out) {
-    char b[64];
-    std::snprintf(b, sizeof(b), "did not finish in %.0f s", timeout);
-    r.status = b;
-    return r;
-  }
-  std::istringstream in(data);
-  std::string tline;
-  std::getline(in, tline);
+  Child_result c = run_in_child(
+    [&]() {
+      std::string note;
+      double aux = -1;
+      const double t = run_method(m, rings, note, aux, nv_dump_file);
+      char b[128];
+      std::snprintf(b, sizeof(b), "%.9g\n%.9g\n", t, aux);
+      return std::string(b) + note;
+    },
+    timeout);
+  r.rss_mb = c.rss_mb;
+  r.status = c.status;
+  r.timed_out = c.timed_out;
+  if(!c.ok) return r;
+  std::istringstream in(c.payload);
+  std::string t, a;
+  std::getline(in, t);
+  std::getline(in, a);
   std::getline(in, r.note);
-  if(!WIFEXITED(status) || WEXITSTATUS(status) != 0) {
-    r.status = r.note.empty() ? "crashed" : r.note;
-    return r;
-  }
-  r.seconds = std::atof(tline.c_str());
+  r.seconds = std::atof(t.c_str());
+  r.aux = std::atof(a.c_str());
   r.ok = true;
-  r.status = "ok";
   return r;
 }
 
-std::vector<std::string> split(const std::string& s, char c)
+double median(std::vector<double> v)
 {
-  std::vector<std::string> out;
-  std::stringstream ss(s);
-  std::string x;
-  while(std::getline(ss, x, c)) if(!x.empty()) out.push_back(x);
-  return out;
-}
-
-std::string base_name(const std::string& path)
-{
-  std::string b = path.substr(path.find_last_of('/') + 1);
-  return b.substr(0, b.find_last_of('.'));
+  if(v.empty()) return -1;
+  std::sort(v.begin(), v.end());
+  return v[v.size() / 2];
 }
 
 } // namespace
@@ -207,42 +238,92 @@ std::string base_name(const std::string& path)
 int main(int argc, char** argv)
 {
   int runs = 3;
-  double timeout = 600;
-  std::vector<std::string> methods = {"pma_filtered", "pma_epick", "sdg", "sdg_hierarchy"};
+  Time_limits limits;
+  bool baseline = true;
+  std::vector<std::string> methods = all_methods;
+  std::string nv_dump_dir;
   std::vector<std::string> files;
   for(int i = 1; i < argc; ++i) {
     std::string a = argv[i];
     if(a == "--runs" && i + 1 < argc) runs = std::max(1, std::atoi(argv[++i]));
-    else if(a == "--timeout" && i + 1 < argc) timeout = std::atof(argv[++i]);
+    else if(a == "--timeout" && i + 1 < argc) limits.timeout = std::atof(argv[++i]);
+    else if(a == "--exact-timeout" && i + 1 < argc) limits.exact_timeout = std::atof(argv[++i]);
     else if(a == "--methods" && i + 1 < argc) methods = split(argv[++i], ',');
-    else if(!a.empty() && a[0] == '-') { std::cerr << "unknown option " << a << "\n"; return 2; }
-    else files.push_back(a);
+    else if(a == "--no-baseline") baseline = false;
+    else if(a == "--nv-dump" && i + 1 < argc) nv_dump_dir = argv[++i];
+    else if(a == "--help" || a == "-h") {
+      std::cout << "usage: bench_time [--runs N] [--timeout S] [--exact-timeout S] [--methods m1,m2,...]\n"
+                   "                  [--no-baseline] [--nv-dump DIR] FILE...\n"
+                   "methods:";
+      for(const std::string& m : all_methods) std::cout << ' ' << m;
+      std::cout << "\n";
+      return 0;
+    } else if(!a.empty() && a[0] == '-') {
+      std::cerr << "unknown option " << a << "\n";
+      return 2;
+    } else
+      files.push_back(a);
   }
-  std::cout << "shape\tvertices\tholes\tmethod\tmedian_seconds\truns\tpeak_rss_mb\tstatus\tnote\n";
+  if(!known_methods(methods, all_methods)) return 2;
+  // the baseline, first
+  const bool listed = std::find(methods.begin(), methods.end(), "pma_filtered") != methods.end();
+  methods.erase(std::remove(methods.begin(), methods.end(), "pma_filtered"), methods.end());
+  if(baseline || listed) methods.insert(methods.begin(), "pma_filtered");
+  if(!nv_dump_dir.empty()) make_directory(nv_dump_dir);
+
+  std::cout << "shape\tvertices\tholes\tmethod\tmedian_seconds\truns\tpeak_rss_mb\tstatus\tnote\tratio_to_pma_filtered\n";
+  std::cout.flush();
   for(const std::string& f : files) {
     Rings rings;
-    try {
-      rings = CGAL::PMA2::read_polygon_file<Point>(f);
-    } catch(const std::exception& e) {
-      std::cerr << f << ": " << e.what() << "\n";
-      return 2;
-    }
-    std::size_t n = 0;
-    for(const auto& r : rings) n += r.size();
+    if(!read_rings_or_report(f, rings)) return 2;
+    const std::string shape = base_name(f);
+    const std::size_t n = number_of_vertices(rings);
+    double base = -1;
     for(const std::string& m : methods) {
-      std::vector<double> times;
+      if(m == "boost_voronoi") {
+        std::vector<std::vector<std::pair<std::int32_t, std::int32_t> > > scaled;
+        if(decimal_scale(rings, scaled) < 0) {
+          std::printf("%s\t%zu\t%zu\t%s\t%.6f\t%d\t%.1f\t%s\t%s\t%s\n", shape.c_str(), n, rings.size() - 1, m.c_str(),
+                      -1.0, 0, 0.0, "not applicable (coordinates not integral at any power-of-ten scale)", "", "-");
+          std::fflush(stdout);
+          continue;
+        }
+      }
+      const double limit = limits.limit(m);
+      const std::string skipped = limits.skip(m, n);
+      if(!skipped.empty()) {
+        std::printf("%s\t%zu\t%zu\t%s\t%.6f\t%d\t%.1f\t%s\t\t-\n", shape.c_str(), n, rings.size() - 1, m.c_str(), -1.0,
+                    0, 0.0, skipped.c_str());
+        std::fflush(stdout);
+        continue;
+      }
+      std::vector<double> times, aux;
       Measure last;
       double rss = 0;
       for(int k = 0; k < runs; ++k) {
-        last = measure(m, rings, timeout);
+        const std::string dump =
+          (m == "pma_filtered" && k == 0 && !nv_dump_dir.empty()) ? nv_dump_dir + "/" + shape + ".nv.txt" : "";
+        last = measure(m, rings, limit, dump);
         rss = std::max(rss, last.rss_mb);
-        if(!last.ok) break;
+        if(!last.ok) {
+          limits.record(m, n, last.timed_out);
+          break;
+        }
         times.push_back(last.seconds);
+        if(last.aux >= 0) aux.push_back(last.aux);
       }
-      std::sort(times.begin(), times.end());
-      double med = times.empty() ? -1 : times[times.size() / 2];
-      std::printf("%s\t%zu\t%zu\t%s\t%.6f\t%zu\t%.1f\t%s\t%s\n", base_name(f).c_str(), n, rings.size() - 1,
-                  m.c_str(), med, times.size(), rss, last.status.c_str(), last.note.c_str());
+      const double med = median(times);
+      std::string note = last.note;
+      if(!aux.empty()) {
+        char b[64];
+        std::snprintf(b, sizeof(b), "build_median_seconds=%.6f", median(aux));
+        note = std::string(b) + ";" + note;
+      }
+      if(m == "pma_filtered") base = med;
+      char ratio[32] = "-";
+      if(med >= 0 && base > 0) std::snprintf(ratio, sizeof(ratio), "%.4g", med / base);
+      std::printf("%s\t%zu\t%zu\t%s\t%.6f\t%zu\t%.1f\t%s\t%s\t%s\n", shape.c_str(), n, rings.size() - 1, m.c_str(),
+                  med, times.size(), rss, last.status.c_str(), note.c_str(), ratio);
       std::fflush(stdout);
     }
   }
