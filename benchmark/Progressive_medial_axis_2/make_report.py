@@ -79,7 +79,7 @@ def fmt_sci(x):
 # ---------------------------------------------------------------- SVG plots
 
 class Axes:
-    def __init__(self, width=640, height=420, left=70, right=190, top=30, bottom=55):
+    def __init__(self, width=720, height=420, left=70, right=270, top=30, bottom=55):
         self.W, self.H = width, height
         self.l, self.r, self.t, self.b = left, right, top, bottom
         self.items = []
@@ -213,11 +213,18 @@ def plot_nv(results, shape, plots_dir):
                 pts.append((float(p[0]), float(p[1])))
     if not pts:
         return None
-    ax = Axes(right=40)
+    title = "n_v per step: " + shape
+    label = "n_v"
+    if len(pts) > 3000:
+        # many steps: the largest n_v of each run of w consecutive steps
+        w = (len(pts) + 1499) // 1500
+        pts = [(pts[k][0], max(y for _, y in pts[k:k + w])) for k in range(0, len(pts), w)]
+        title += " (max over every %d steps)" % w
+        label = "max n_v of %d steps" % w
+    ax = Axes(right=170)
     ax.frame(0, max(1.0, pts[-1][0]), 0, max(1.0, max(y for _, y in pts)) * 1.1, False, False,
-             "refinement step", "n_v (largest priority queue of the merge)", "n_v per step: " + shape)
-    # many steps: draw as small points
-    ax_series = [("n_v", pts, "points")]
+             "refinement step", "n_v (largest priority queue of the merge)", title)
+    ax_series = [(label, pts, "points")]
     svg = ax.svg(ax_series).replace('r="2.5"', 'r="1"')
     name = "nv_%s.svg" % shape
     write(os.path.join(plots_dir, name), svg)
@@ -235,19 +242,18 @@ def plot_accuracy(results, shape, methods, plots_dir):
         if not vals:
             continue
         n = len(vals)
-        pts = [((i + 1) / n, v) for i, v in enumerate(vals) if v > 0]
-        # thin out long curves
-        if len(pts) > 2000:
-            step = len(pts) / 2000.0
-            pts = [pts[int(k * step)] for k in range(2000)] + [pts[-1]]
+        # long curves: about 2000 points spread evenly on the log-scaled x axis
+        keep = sorted({min(n - 1, int(n * 10 ** (-4 + 4 * k / 2000.0))) for k in range(2001)} | set(range(min(n, 50))))
+        pts = [((i + 1) / n, vals[i]) for i in keep if vals[i] > 0]
         if pts:
             ymin = min(ymin or pts[-1][1], min(y for _, y in pts))
             ymax = max(ymax or 0, max(y for _, y in pts))
         series.append((METHOD_LABELS.get(m, m), pts, "line"))
     if not series or ymin is None:
         return None
-    ax = Axes(width=760, right=290)
-    ax.frame(1e-4 if len(series) else 1, 1, 10 ** math.floor(math.log10(ymin)), 10 ** math.ceil(math.log10(ymax)),
+    xmin = min(x for _, pts, _ in series for x, _ in pts[:1]) if series else 1e-4
+    ax = Axes(width=840, right=360)
+    ax.frame(10 ** math.floor(math.log10(min(xmin, 1e-4))), 1, 10 ** math.floor(math.log10(ymin)), 10 ** math.ceil(math.log10(ymax)),
              True, True, "fraction of branch points (sorted by E(x), decreasing)", "E(x)",
              "Sorted E(x): " + shape)
     name = "accuracy_%s.svg" % shape
@@ -348,9 +354,11 @@ def main():
                   "E(x) = 1 - r_min / r_max over the branch points (paper, Table 3), with the true "
                   "distances to each point's generators. Per method: mean / standard deviation / max. "
                   "The floor is the exact branch point correctly rounded to double. `topology`: whether "
-                  "that model's medial curves match the oracle (CGAL's segment Delaunay graph with exact "
-                  "predicates) within the degenerate tolerance.", ""]
-        lines += ["| shape | branch points | " + " | ".join(METHOD_LABELS.get(m, m) for m in apresent) + " | topology (ours, filtered) |",
+                  "the medial curves match the oracle (CGAL's segment Delaunay graph with exact "
+                  "predicates) within the degenerate tolerance: \"same\" when every model that ran "
+                  "(ours with each traits model, SDG's interior extraction) matches, else the models "
+                  "that differ, with the number of curves that differ.", ""]
+        lines += ["| shape | branch points | " + " | ".join(METHOD_LABELS.get(m, m) for m in apresent) + " | topology |",
                   "|---|---:|" + "---|" * (len(apresent) + 1)]
         for s in order:
             rows = {r["method"]: r for r in acc_rows if r["shape"] == s}
@@ -366,7 +374,9 @@ def main():
                 else:
                     cells.append("%s / %s / %s" % (fmt_sci(fnum(r["mean"])), fmt_sci(fnum(r["sd"])), fmt_sci(fnum(r["max"]))))
             bp = rows.get("pma_filtered", rows.get("floor", {})).get("branch_points", "-")
-            topo = rows.get("pma_filtered", {}).get("topology", "-")
+            checked = [(m, r["topology"]) for m, r in rows.items() if r["status"] == "ok" and r["topology"] not in ("-", "")]
+            differ = ["%s %s" % (m, t.replace("differs ", "")) for m, t in checked if t != "same"]
+            topo = ("differs: " + ", ".join(differ)) if differ else ("same" if checked else "-")
             lines.append("| %s | %s | %s | %s |" % (s, bp, " | ".join(cells), topo))
         lines.append("")
         for s in order:
