@@ -20,6 +20,7 @@
 #include <cmath>
 #include <limits>
 #include <memory>
+#include <optional>
 #include <type_traits>
 
 namespace CGAL {
@@ -539,36 +540,28 @@ private:
       } catch(Uncertain_conversion_exception&) {
       }
     }
-    // MPFR intervals at the first precision, exact one-root numbers, MPFR
-    // intervals at the second precision (what the first cannot decide is
-    // almost always an exact tie), then the exact number type
     ++filter_statistics().mpfr_evaluations;
-    for(int stage = 0; stage < 3; ++stage) {
-      if(stage == 1) {
-        try {
-          PMA2::internal::One_root_sqrt v;
-          if(!t.evaluate_one_root(v))
-            return false;
-          ++filter_statistics().rational_evaluations;
-          t.rational_ = std::make_shared<PMA2::internal::One_root_sqrt>(v);
-          t.rational_state_ = 1;
-          t.approx_ = v.to_interval();
-          return true;
-        } catch(PMA2::internal::Not_one_root&) {
-          t.rational_state_ = -1;
-        }
-        continue;
-      }
-      PMA2::internal::Mpfr_precision_scope scope(mpfr_precisions[stage / 2]);
-      try {
+    const std::optional<bool> decided = before_exact<bool>(
+      [&]() -> std::optional<bool> {
         Mpfr v;
         if(!t.mpfr(v))
           return false;
         t.approx_ = v.to_interval();
         return true;
-      } catch(Uncertain_conversion_exception&) {
-      }
-    }
+      },
+      [&]() -> std::optional<bool> {
+        t.rational_state_ = -1; // unless it succeeds
+        PMA2::internal::One_root_sqrt v;
+        if(!t.evaluate_one_root(v))
+          return false;
+        ++filter_statistics().rational_evaluations;
+        t.rational_ = std::make_shared<PMA2::internal::One_root_sqrt>(v);
+        t.rational_state_ = 1;
+        t.approx_ = v.to_interval();
+        return true;
+      });
+    if(decided)
+      return *decided;
     ++filter_statistics().exact_evaluations;
     typename PMA2::internal::Exact_scope_for<Exact_FT>::Type scope;
     Exact_FT e(0);
@@ -601,32 +594,28 @@ private:
     if(a.tie_ && a.tie_ == b.tie_)
       return EQUAL;
     if(!a.exact_ || !b.exact_) {
-      for(int stage = 0; stage < 3; ++stage) {
-        if(stage == 1) {
-          if(const PMA2::internal::One_root_sqrt* ra = a.rational())
-            if(const PMA2::internal::One_root_sqrt* rb = b.rational()) {
-              try {
-                const Comparison_result res = Comparison_result(int(sign_of_difference(*ra, *rb)));
-                ++filter_statistics().rational_comparisons;
-                return tie(a, b, res);
-              } catch(PMA2::internal::Not_one_root&) {
-              }
-            }
-          continue;
-        }
-        PMA2::internal::Mpfr_precision_scope scope(mpfr_precisions[stage / 2]);
-        try {
+      const std::optional<Comparison_result> decided = before_exact<Comparison_result>(
+        [&]() -> std::optional<Comparison_result> {
           Mpfr va, vb;
-          if(a.mpfr(va) && b.mpfr(vb)) {
-            Uncertain<Comparison_result> m = compare(va, vb);
-            if(is_certain(m)) {
-              ++filter_statistics().mpfr_comparisons;
-              return get_certain(m);
-            }
-          }
-        } catch(Uncertain_conversion_exception&) {
-        }
-      }
+          if(!a.mpfr(va) || !b.mpfr(vb))
+            return std::nullopt;
+          Uncertain<Comparison_result> m = compare(va, vb);
+          if(!is_certain(m))
+            return std::nullopt;
+          ++filter_statistics().mpfr_comparisons;
+          return get_certain(m);
+        },
+        [&]() -> std::optional<Comparison_result> {
+          const PMA2::internal::One_root_sqrt* ra = a.rational();
+          const PMA2::internal::One_root_sqrt* rb = ra ? b.rational() : nullptr;
+          if(rb == nullptr)
+            return std::nullopt;
+          const Comparison_result res = Comparison_result(int(sign_of_difference(*ra, *rb)));
+          ++filter_statistics().rational_comparisons;
+          return tie(a, b, res);
+        });
+      if(decided)
+        return *decided;
     }
     ++filter_statistics().exact_comparisons;
     typename PMA2::internal::Exact_scope_for<Exact_FT>::Type scope;
@@ -683,36 +672,29 @@ private:
         return true;
       }
     }
-    // MPFR intervals, exact one-root numbers, MPFR intervals at the second
-    // precision, then the exact number type (as for times)
     ++filter_statistics().mpfr_evaluations;
-    for(int stage = 0; stage < 3; ++stage) {
-      if(stage == 1) {
-        try {
-          PMA2::internal::Circle_nt<PMA2::internal::One_root_rational> circle;
-          if(!disk_nt<PMA2::internal::One_root_rational>(s, rel, circle))
-            return false;
-          ++filter_statistics().rational_evaluations;
-          centre = Point_2(circle.x.to_double(), circle.y.to_double());
-          radius = circle.r.to_double();
-          return true;
-        } catch(PMA2::internal::Not_one_root&) {
-        }
-        continue;
-      }
-      PMA2::internal::Mpfr_precision_scope scope(mpfr_precisions[stage / 2]);
-      try {
+    const std::optional<bool> decided = before_exact<bool>(
+      [&]() -> std::optional<bool> {
         PMA2::internal::Circle_nt<Mpfr> circle;
         if(!disk_nt<Mpfr>(s, rel, circle))
           return false;
-        if(circle.x.rounds_to_one_double() && circle.y.rounds_to_one_double() && circle.r.rounds_to_one_double()) {
-          centre = Point_2(circle.x.midpoint(), circle.y.midpoint());
-          radius = circle.r.midpoint();
-          return true;
-        }
-      } catch(Uncertain_conversion_exception&) {
-      }
-    }
+        if(!circle.x.rounds_to_one_double() || !circle.y.rounds_to_one_double() || !circle.r.rounds_to_one_double())
+          return std::nullopt;
+        centre = Point_2(circle.x.midpoint(), circle.y.midpoint());
+        radius = circle.r.midpoint();
+        return true;
+      },
+      [&]() -> std::optional<bool> {
+        PMA2::internal::Circle_nt<PMA2::internal::One_root_rational> circle;
+        if(!disk_nt<PMA2::internal::One_root_rational>(s, rel, circle))
+          return false;
+        ++filter_statistics().rational_evaluations;
+        centre = Point_2(circle.x.to_double(), circle.y.to_double());
+        radius = circle.r.to_double();
+        return true;
+      });
+    if(decided)
+      return *decided;
     ++filter_statistics().exact_evaluations;
     typename PMA2::internal::Exact_scope_for<Exact_FT>::Type scope;
     PMA2::internal::Circle_nt<Exact_FT> circle;
@@ -721,6 +703,34 @@ private:
     centre = Point_2(CGAL::to_double(circle.x), CGAL::to_double(circle.y));
     radius = CGAL::to_double(circle.r);
     return true;
+  }
+
+  // The stages between the double intervals and the exact number type, in
+  // order: MPFR intervals at the first precision, exact one-root numbers,
+  // MPFR intervals at the second precision (what the first precision cannot
+  // decide is almost always an exact tie, which the one-root numbers decide
+  // far faster).  A stage returns its result, or nothing when it cannot
+  // decide; an undecidable MPFR comparison or a value outside the one-root
+  // form counts as nothing.
+  template <class R, class Mpfr_stage, class One_root_stage>
+  static std::optional<R> before_exact(const Mpfr_stage& mpfr_stage, const One_root_stage& one_root_stage)
+  {
+    auto mpfr_at = [&](mpfr_prec_t precision) -> std::optional<R> {
+      PMA2::internal::Mpfr_precision_scope scope(precision);
+      try {
+        return mpfr_stage();
+      } catch(Uncertain_conversion_exception&) {
+        return std::nullopt;
+      }
+    };
+    if(std::optional<R> r = mpfr_at(mpfr_precisions[0]))
+      return r;
+    try {
+      if(std::optional<R> r = one_root_stage())
+        return r;
+    } catch(PMA2::internal::Not_one_root&) {
+    }
+    return mpfr_at(mpfr_precisions[1]);
   }
 
   template <class NT>

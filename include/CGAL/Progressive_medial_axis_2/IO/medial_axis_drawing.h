@@ -88,9 +88,10 @@ void write_svg(std::ostream& out, const Medial_axis& ma, const std::string& titl
   out << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << W << "\" height=\"" << H
       << "\" viewBox=\"0 0 " << W << ' ' << H << "\">\n";
   out << "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
-  if(show_input) {
-    out << "<path fill=\"#f4f4f4\" stroke=\"#b0b0b0\" stroke-width=\"0.6\" fill-rule=\"evenodd\" d=\"";
-    for(const auto& c : ma.input_rings()) {
+  // a filled path of closed rings of point indices
+  auto rings_path = [&](const auto& rings, const char* style) {
+    out << "<path " << style << " fill-rule=\"evenodd\" d=\"";
+    for(const auto& c : rings) {
       for(std::size_t i = 0; i < c.size(); ++i) {
         auto p = Medial_axis::to_xy(ma.points()[c[i]]);
         std::snprintf(buf, sizeof(buf), "%c%.2f %.2f", i == 0 ? 'M' : 'L', X(p.first), Y(p.second));
@@ -99,17 +100,10 @@ void write_svg(std::ostream& out, const Medial_axis& ma, const std::string& titl
       out << 'Z';
     }
     out << "\"/>\n";
-  }
-  out << "<path fill=\"#e8eef7\" stroke=\"#203040\" stroke-width=\"0.8\" fill-rule=\"evenodd\" d=\"";
-  for(const auto& c : ma.boundary_cycles()) {
-    for(std::size_t i = 0; i < c.size(); ++i) {
-      auto p = Medial_axis::to_xy(ma.points()[c[i]]);
-      std::snprintf(buf, sizeof(buf), "%c%.2f %.2f", i == 0 ? 'M' : 'L', X(p.first), Y(p.second));
-      out << buf;
-    }
-    out << 'Z';
-  }
-  out << "\"/>\n";
+  };
+  if(show_input)
+    rings_path(ma.input_rings(), "fill=\"#f4f4f4\" stroke=\"#b0b0b0\" stroke-width=\"0.6\"");
+  rings_path(ma.boundary_cycles(), "fill=\"#e8eef7\" stroke=\"#203040\" stroke-width=\"0.8\"");
   for(int kind = 0; kind < 2; ++kind) {
     out << "<path fill=\"none\" stroke=\"" << (kind == 0 ? "#1f5fbf" : "#c0392b")
         << "\" stroke-width=\"1\" d=\"";

@@ -97,26 +97,26 @@ public:
   /// one unit in the last place.
   double to_double() const
   {
-    mpfr_t x, y;
-    mpfr_init2(x, 256);
-    mpfr_init2(y, 256);
-    mpfr_set_q(x, d_.mpq(), MPFR_RNDN);
-    mpfr_sqrt(x, x, MPFR_RNDN);
-    mpfr_set_q(y, b_.mpq(), MPFR_RNDN);
-    mpfr_mul(x, x, y, MPFR_RNDN);
-    mpfr_set_q(y, a_.mpq(), MPFR_RNDN);
-    mpfr_add(x, x, y, MPFR_RNDN);
-    const double r = is_rational() ? 0.0 : mpfr_get_d(x, MPFR_RNDN);
+    mpfr_t x;
+    if(is_rational()) {
+      mpfr_init2(x, 53);
+      mpfr_set_q(x, a_.mpq(), MPFR_RNDN);
+    } else {
+      // a + b sqrt(d) at 256 bits
+      mpfr_t y;
+      mpfr_init2(x, 256);
+      mpfr_init2(y, 256);
+      mpfr_set_q(x, d_.mpq(), MPFR_RNDN);
+      mpfr_sqrt(x, x, MPFR_RNDN);
+      mpfr_set_q(y, b_.mpq(), MPFR_RNDN);
+      mpfr_mul(x, x, y, MPFR_RNDN);
+      mpfr_set_q(y, a_.mpq(), MPFR_RNDN);
+      mpfr_add(x, x, y, MPFR_RNDN);
+      mpfr_clear(y);
+    }
+    const double r = mpfr_get_d(x, MPFR_RNDN);
     mpfr_clear(x);
-    mpfr_clear(y);
-    if(!is_rational())
-      return r;
-    mpfr_t z;
-    mpfr_init2(z, 53);
-    mpfr_set_q(z, a_.mpq(), MPFR_RNDN);
-    const double q = mpfr_get_d(z, MPFR_RNDN);
-    mpfr_clear(z);
-    return q;
+    return r;
   }
 
   One_root_rational operator-() const { return One_root_rational(-a_, -b_, d_); }
