@@ -116,10 +116,10 @@ std::ofstream open_out(const std::string& path)
 template <class Traits>
 void print_filter_statistics(const Traits&) {}
 
-template <class CK, class EK>
-void print_filter_statistics(const CGAL::Progressive_medial_axis_filtered_traits_2<CK, EK>&)
+template <class CK>
+void print_filter_statistics(const CGAL::Progressive_medial_axis_filtered_traits_2<CK>&)
 {
-  const auto& f = CGAL::Progressive_medial_axis_filtered_traits_2<CK, EK>::filter_statistics();
+  const auto& f = CGAL::Progressive_medial_axis_filtered_traits_2<CK>::filter_statistics();
   std::printf("filter_interval_evaluations %zu\nfilter_double_double_evaluations %zu\nfilter_mpfr_evaluations %zu\n"
               "filter_rational_evaluations %zu\nfilter_exact_evaluations %zu\nfilter_mpfr_comparisons %zu\n"
               "filter_rational_comparisons %zu\nfilter_exact_comparisons %zu\nfilter_exact_ties %zu\n",

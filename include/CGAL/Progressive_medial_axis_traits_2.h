@@ -8,6 +8,7 @@
 #include <CGAL/Progressive_medial_axis_2/internal/Mpfr_interval.h>
 #include <CGAL/Progressive_medial_axis_2/internal/Double_double.h>
 #include <CGAL/Progressive_medial_axis_2/internal/One_root_rational.h>
+#include <CGAL/Progressive_medial_axis_2/internal/Nested_root_number.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Simple_cartesian.h>
@@ -137,35 +138,6 @@ bool evaluate_time(Time_kind kind, const Site_& c, const Site_* s, const Triple_
     return chord_far_end_parts(px, py, qx, qy, circle, t, *rad);
   return chord_far_end(px, py, qx, qy, circle, t);
 }
-
-/// CORE::Expr's progressive evaluation has been seen to give a wrong sign for
-/// an expression that is exactly zero (CGAL 5.5; the package's test oracle
-/// has a reproducer).  The filtered traits reach CORE only for exact ties,
-/// where this matters, and switch it off for the duration of those
-/// evaluations (it is far too slow to switch off for every evaluation of the
-/// all-CORE model).  The flag is global to CORE: do not run such exact
-/// evaluations concurrently with other code that changes it.
-class Core_exact_scope
-{
-public:
-  Core_exact_scope() : old_(CORE::setProgressiveEvalFlag(false)) {}
-  ~Core_exact_scope() { CORE::setProgressiveEvalFlag(old_); }
-  Core_exact_scope(const Core_exact_scope&) = delete;
-  Core_exact_scope& operator=(const Core_exact_scope&) = delete;
-
-private:
-  bool old_;
-};
-
-/// The scope for a number type: only CORE::Expr needs one.
-template <class NT>
-struct Exact_scope_for {
-  struct Type {};
-};
-template <>
-struct Exact_scope_for<CORE::Expr> {
-  typedef Core_exact_scope Type;
-};
 
 struct Identity_convert {
   template <class T> const T& operator()(const T& x) const { return x; }
@@ -300,8 +272,8 @@ construction and every decision of the merge is computed in `K::FT`.
   (`Simple_cartesian<CORE::Expr>`) every decision and construction is made
   by `CORE::Expr`, with its default (progressive) evaluation.  CGAL 5.5's
   CORE has been seen to misjudge the sign of an expression that is exactly
-  zero in that mode; the filtered model, which takes its rare exact decisions
-  with progressive evaluation off, is the more reliable exact choice.
+  zero in that mode; the filtered model, which never uses `CORE::Expr`, is
+  the more reliable exact choice.
 
 \cgalModels `ProgressiveMedialAxisTraits_2`
 */
@@ -370,7 +342,7 @@ namespace internal {
 
 /// An event time of the filtered traits: an interval that encloses it, and
 /// what is needed to evaluate it again more precisely on demand.
-template <class Site_2, class Exact_FT>
+template <class Site_2>
 class Filtered_event_time
 {
 public:
@@ -415,24 +387,17 @@ public:
     return rational_state_ > 0 ? rational_.get() : nullptr;
   }
 
-  /// The exact time (progressive evaluation off, see Core_exact_scope).
-  const Exact_FT& exact() const
+  /// The time in nested-root numbers, in the current Nested_root_context.
+  bool nested(Nested_root_number& t) const
   {
-    if(!exact_) {
-      typename Exact_scope_for<Exact_FT>::Type scope;
-      Exact_FT t(0);
-      To_nt_convert<Exact_FT> cv;
-      evaluate_time<Exact_FT>(kind_, c_, s_, rel_, cv, t);
-      exact_ = std::make_shared<Exact_FT>(t);
-    }
-    return *exact_;
+    To_nt_convert<Nested_root_number> cv;
+    return evaluate_time<Nested_root_number>(kind_, c_, s_, rel_, cv, t);
   }
 
   Time_kind kind_ = TIME_ZERO;
   Interval approx_;
   Site_2 c_, s_[3];
   Triple_relations rel_;
-  mutable std::shared_ptr<Exact_FT> exact_;
   mutable std::shared_ptr<One_root_sqrt> rational_;
   mutable signed char rational_state_ = 0; // 0 unknown, 1 rational_ holds it, -1 not rational
   mutable std::shared_ptr<char> tie_;       // shared by times found exactly equal
@@ -447,12 +412,17 @@ public:
 The filtered traits model: every decision is exact, and almost all are
 taken in floating point.  A decision is evaluated first in double interval
 arithmetic (`Interval_nt`), then, when the interval cannot decide, in MPFR
-interval arithmetic at 256 and at 2048 bits.  What the intervals cannot
-decide is an exact tie (equal event times, a zero discriminant).  It is then
-decided exactly in numbers alpha + sqrt(rho), where alpha and rho are
-a + b sqrt(D) with rational a, b, D (GMP), when the computation keeps that
-form, as is usual with axis-parallel edges (mazes, CAD parts), and otherwise with the number type of `EK` (default `CORE::Expr`,
-with its progressive evaluation off), which is much slower.
+interval arithmetic at 256 bits.  What that cannot decide is almost always
+an exact tie (equal event times, a zero discriminant), which is decided
+exactly:
+- in numbers alpha + sqrt(rho), where alpha and rho are a + b sqrt(D) with
+  rational a, b, D (GMP), when the computation keeps that form, as is usual
+  with axis-parallel edges (mazes, CAD parts);
+- otherwise in nested-root numbers: polynomials with rational coefficients
+  in the square roots that the computation takes (segment lengths,
+  discriminants, chords), each root possibly of a number holding others,
+  whose sign is found by exact squaring.  This stage always decides: the
+  model never needs `CORE::Expr` and has no global state.
 
 Constructed vertices: the double intervals decide the branches of the
 construction (which of two tangent circles, ...); the disk is then computed
@@ -465,16 +435,15 @@ else the exact value is rounded to double.  Points are those of `CK`
 
 \cgalModels `ProgressiveMedialAxisTraits_2`
 */
-template <class CK = Exact_predicates_inexact_constructions_kernel,
-          class EK = Simple_cartesian<CORE::Expr> >
+template <class CK = Exact_predicates_inexact_constructions_kernel>
 class Progressive_medial_axis_filtered_traits_2
   : public PMA2::internal::Traits_functors<
-      Progressive_medial_axis_filtered_traits_2<CK, EK>, CK, typename CK::FT, typename CK::Point_2,
-      PMA2::internal::Filtered_event_time<PMA2::internal::Site<typename CK::Point_2>, typename EK::FT> >
+      Progressive_medial_axis_filtered_traits_2<CK>, CK, typename CK::FT, typename CK::Point_2,
+      PMA2::internal::Filtered_event_time<PMA2::internal::Site<typename CK::Point_2> > >
 {
   typedef PMA2::internal::Traits_functors<
-    Progressive_medial_axis_filtered_traits_2<CK, EK>, CK, typename CK::FT, typename CK::Point_2,
-    PMA2::internal::Filtered_event_time<PMA2::internal::Site<typename CK::Point_2>, typename EK::FT> > Base;
+    Progressive_medial_axis_filtered_traits_2<CK>, CK, typename CK::FT, typename CK::Point_2,
+    PMA2::internal::Filtered_event_time<PMA2::internal::Site<typename CK::Point_2> > > Base;
   friend Base;
 
 public:
@@ -482,9 +451,9 @@ public:
   typedef typename Base::Point_2 Point_2;
   typedef typename Base::Site_2 Site_2;
   typedef typename Base::Event_time_2 Event_time_2;
-  typedef typename EK::FT Exact_FT;
   typedef Interval_nt<false> Interval;
   typedef PMA2::internal::Mpfr_interval Mpfr;
+  typedef PMA2::internal::Nested_root_number Nested;
 
   static constexpr bool Has_exact_decisions = true;
 
@@ -494,12 +463,12 @@ public:
     std::size_t interval_evaluations = 0;      ///< times and disks evaluated in double intervals
     std::size_t double_double_evaluations = 0; ///< disks constructed in double-double arithmetic
     std::size_t mpfr_evaluations = 0;          ///< ... that needed MPFR intervals
-    std::size_t rational_evaluations = 0;      ///< ... that were decided in exact rational arithmetic
-    std::size_t exact_evaluations = 0;         ///< ... that needed the exact number type
+    std::size_t rational_evaluations = 0;      ///< ... that were decided in exact one-root numbers
+    std::size_t exact_evaluations = 0;         ///< ... that needed the nested-root numbers
     std::size_t mpfr_comparisons = 0;          ///< comparisons of times decided by MPFR intervals
-    std::size_t rational_comparisons = 0;      ///< ... decided in exact rational arithmetic
-    std::size_t exact_comparisons = 0;         ///< ... decided with the exact number type
-    std::size_t exact_ties = 0;                ///< comparisons that found two times equal (one-root or exact)
+    std::size_t rational_comparisons = 0;      ///< ... decided in exact one-root numbers
+    std::size_t exact_comparisons = 0;         ///< ... decided in nested-root numbers
+    std::size_t exact_ties = 0;                ///< comparisons that found two times equal (one-root or nested)
   };
   static Filter_statistics& filter_statistics()
   {
@@ -507,8 +476,8 @@ public:
     return s;
   }
 
-  /// The precisions, in bits, of the MPFR stages.
-  static constexpr mpfr_prec_t mpfr_precisions[2] = {256, 2048};
+  /// The precision, in bits, of the MPFR stage.
+  static constexpr mpfr_prec_t mpfr_precision = 256;
 
 private:
   // Evaluates a time: double intervals, MPFR intervals, exactly.
@@ -520,7 +489,6 @@ private:
       for(int i = 0; i < 3; ++i) t.s_[i] = s[i];
       t.rel_ = PMA2::internal::triple_relations<CK>(s);
     }
-    t.exact_.reset();
     t.rational_.reset();
     t.rational_state_ = 0;
     t.tie_.reset();
@@ -563,13 +531,11 @@ private:
     if(decided)
       return *decided;
     ++filter_statistics().exact_evaluations;
-    typename PMA2::internal::Exact_scope_for<Exact_FT>::Type scope;
-    Exact_FT e(0);
-    PMA2::internal::To_nt_convert<Exact_FT> cv;
-    if(!PMA2::internal::evaluate_time<Exact_FT>(kind, line, t.s_, t.rel_, cv, e))
+    PMA2::internal::Nested_root_context context;
+    Nested v;
+    if(!t.nested(v))
       return false;
-    t.exact_ = std::make_shared<Exact_FT>(e);
-    t.approx_ = CGAL::to_interval(e);
+    t.approx_ = v.to_interval();
     return true;
   }
 
@@ -593,33 +559,35 @@ private:
     // already found equal
     if(a.tie_ && a.tie_ == b.tie_)
       return EQUAL;
-    if(!a.exact_ || !b.exact_) {
-      const std::optional<Comparison_result> decided = before_exact<Comparison_result>(
-        [&]() -> std::optional<Comparison_result> {
-          Mpfr va, vb;
-          if(!a.mpfr(va) || !b.mpfr(vb))
-            return std::nullopt;
-          Uncertain<Comparison_result> m = compare(va, vb);
-          if(!is_certain(m))
-            return std::nullopt;
-          ++filter_statistics().mpfr_comparisons;
-          return get_certain(m);
-        },
-        [&]() -> std::optional<Comparison_result> {
-          const PMA2::internal::One_root_sqrt* ra = a.rational();
-          const PMA2::internal::One_root_sqrt* rb = ra ? b.rational() : nullptr;
-          if(rb == nullptr)
-            return std::nullopt;
-          const Comparison_result res = Comparison_result(int(sign_of_difference(*ra, *rb)));
-          ++filter_statistics().rational_comparisons;
-          return tie(a, b, res);
-        });
-      if(decided)
-        return *decided;
-    }
+    const std::optional<Comparison_result> decided = before_exact<Comparison_result>(
+      [&]() -> std::optional<Comparison_result> {
+        Mpfr va, vb;
+        if(!a.mpfr(va) || !b.mpfr(vb))
+          return std::nullopt;
+        Uncertain<Comparison_result> m = compare(va, vb);
+        if(!is_certain(m))
+          return std::nullopt;
+        ++filter_statistics().mpfr_comparisons;
+        return get_certain(m);
+      },
+      [&]() -> std::optional<Comparison_result> {
+        const PMA2::internal::One_root_sqrt* ra = a.rational();
+        const PMA2::internal::One_root_sqrt* rb = ra ? b.rational() : nullptr;
+        if(rb == nullptr)
+          return std::nullopt;
+        const Comparison_result res = Comparison_result(int(sign_of_difference(*ra, *rb)));
+        ++filter_statistics().rational_comparisons;
+        return tie(a, b, res);
+      });
+    if(decided)
+      return *decided;
     ++filter_statistics().exact_comparisons;
-    typename PMA2::internal::Exact_scope_for<Exact_FT>::Type scope;
-    return tie(a, b, CGAL::compare(a.exact(), b.exact()));
+    PMA2::internal::Nested_root_context context;
+    Nested ta, tb;
+    const bool ok = a.nested(ta) && b.nested(tb);
+    CGAL_assertion(ok);
+    CGAL_USE(ok);
+    return tie(a, b, Comparison_result(int(sign_of_difference(ta, tb))));
   }
 
   // Remembers that a and b are equal, so that comparing them again is immediate.
@@ -696,41 +664,38 @@ private:
     if(decided)
       return *decided;
     ++filter_statistics().exact_evaluations;
-    typename PMA2::internal::Exact_scope_for<Exact_FT>::Type scope;
-    PMA2::internal::Circle_nt<Exact_FT> circle;
-    if(!disk_nt<Exact_FT>(s, rel, circle))
+    PMA2::internal::Nested_root_context context;
+    PMA2::internal::Circle_nt<Nested> circle;
+    if(!disk_nt<Nested>(s, rel, circle))
       return false;
-    centre = Point_2(CGAL::to_double(circle.x), CGAL::to_double(circle.y));
-    radius = CGAL::to_double(circle.r);
+    centre = Point_2(circle.x.to_double(), circle.y.to_double());
+    radius = circle.r.to_double();
     return true;
   }
 
-  // The stages between the double intervals and the exact number type, in
-  // order: MPFR intervals at the first precision, exact one-root numbers,
-  // MPFR intervals at the second precision (what the first precision cannot
+  // The stages between the double intervals and the nested-root numbers, in
+  // order: MPFR intervals, then exact one-root numbers (what MPFR cannot
   // decide is almost always an exact tie, which the one-root numbers decide
-  // far faster).  A stage returns its result, or nothing when it cannot
-  // decide; an undecidable MPFR comparison or a value outside the one-root
-  // form counts as nothing.
+  // far faster when the computation keeps their form).  A stage returns its
+  // result, or nothing when it cannot decide; an undecidable MPFR comparison
+  // or a value outside the one-root form counts as nothing.
   template <class R, class Mpfr_stage, class One_root_stage>
   static std::optional<R> before_exact(const Mpfr_stage& mpfr_stage, const One_root_stage& one_root_stage)
   {
-    auto mpfr_at = [&](mpfr_prec_t precision) -> std::optional<R> {
-      PMA2::internal::Mpfr_precision_scope scope(precision);
+    {
+      PMA2::internal::Mpfr_precision_scope scope(mpfr_precision);
       try {
-        return mpfr_stage();
+        if(std::optional<R> r = mpfr_stage())
+          return r;
       } catch(Uncertain_conversion_exception&) {
-        return std::nullopt;
       }
-    };
-    if(std::optional<R> r = mpfr_at(mpfr_precisions[0]))
-      return r;
+    }
     try {
       if(std::optional<R> r = one_root_stage())
         return r;
     } catch(PMA2::internal::Not_one_root&) {
     }
-    return mpfr_at(mpfr_precisions[1]);
+    return std::nullopt;
   }
 
   template <class NT>

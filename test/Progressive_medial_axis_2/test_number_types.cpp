@@ -1,7 +1,10 @@
-// Unit tests of the exact one-root numbers of the filtered traits
-// (internal/One_root_rational.h): exact ties, signs against MPFR at high
-// precision, and the cases that must be handed on (Not_one_root).
+// Unit tests of the exact numbers of the filtered traits: the one-root
+// numbers (internal/One_root_rational.h): exact ties, signs against MPFR at
+// high precision, and the cases that must be handed on (Not_one_root); and
+// the nested-root numbers (internal/Nested_root_number.h) that take them:
+// several roots, roots of roots, roots that denest, exact zeros, division.
 #include <CGAL/Progressive_medial_axis_2/internal/One_root_rational.h>
+#include <CGAL/Progressive_medial_axis_2/internal/Nested_root_number.h>
 
 #include <cstdio>
 #include <cstdlib>
@@ -11,6 +14,8 @@ using CGAL::Gmpq;
 using CGAL::PMA2::internal::Not_one_root;
 using CGAL::PMA2::internal::One_root_rational;
 using CGAL::PMA2::internal::One_root_sqrt;
+using CGAL::PMA2::internal::Nested_root_context;
+using CGAL::PMA2::internal::Nested_root_number;
 
 namespace {
 
@@ -47,10 +52,79 @@ double sign_mpfr(long a1, long b1, long d1, long a2, long b2, long d2)
   return r;
 }
 
+typedef Nested_root_number N;
+
+N nroot(const N& x) { return sqrt(x); }
+
+// sign of (expression evaluated by f in MPFR at 4096 bits), 0 if below 1e-1000
+template <class F>
+CGAL::Sign mpfr_sign(const F& f)
+{
+  mpfr_t x;
+  mpfr_init2(x, 4096);
+  f(x);
+  CGAL::Sign s = CGAL::ZERO;
+  if(mpfr_cmpabs_ui(x, 0) != 0 && mpfr_get_exp(x) > -3300) s = mpfr_sgn(x) > 0 ? CGAL::POSITIVE : CGAL::NEGATIVE;
+  mpfr_clear(x);
+  return s;
+}
+
+void nested_root_tests()
+{
+  Nested_root_context context;
+  const N two(2), three(3);
+  const N s2 = nroot(two), s3 = nroot(three), s6 = nroot(N(6)), s8 = nroot(N(8));
+  check(s8 * s2 == N(4), "nested: sqrt 8 * sqrt 2 = 4");
+  check(s8 == N(2) * s2, "nested: sqrt 8 = 2 sqrt 2 (shared root)");
+  check(s2 * s3 == s6, "nested: sqrt 2 sqrt 3 = sqrt 6");
+  check((s2 + s3) * (s2 + s3) == N(5) + N(2) * s6, "nested: (sqrt 2 + sqrt 3)^2 = 5 + 2 sqrt 6");
+  check(nroot(N(5) + N(2) * s6) == s2 + s3, "nested: sqrt(5 + 2 sqrt 6) = sqrt 2 + sqrt 3 (denests)");
+  const N d = nroot(N(3) + N(2) * s2);   // = 1 + sqrt 2, a root dependent on sqrt 2
+  check(d == N(1) + s2 && d - s2 == N(1), "nested: sqrt(3 + 2 sqrt 2) = 1 + sqrt 2");
+  check(N(1) / (d - s2) == N(1), "nested: division by a denominator with dependent roots");
+  check(N(7) / (d + s2 - N(1)) == N(7) / (N(2) * s2), "nested: division, dependent conjugate");
+  const N q = N(1) + s2 + s3;
+  check((N(1) / q) * q == N(1), "nested: 1 / (1 + sqrt 2 + sqrt 3) * (1 + sqrt 2 + sqrt 3) = 1");
+  // sqrt(a + sqrt b) sqrt(a - sqrt b) = sqrt(a^2 - b)
+  const N sb = nroot(N(7));
+  check(nroot(N(4) + sb) * nroot(N(4) - sb) == N(3), "nested: sqrt(4 + sqrt 7) sqrt(4 - sqrt 7) = 3");
+  check(nroot(N(4) + sb) > nroot(N(4) - sb) && !(nroot(N(4) + sb) < nroot(N(4) - sb)), "nested: ordering");
+  check(s2.to_double() == std::sqrt(2.0) && (N(1) / N(3)).to_double() == 1.0 / 3.0, "nested: to_double");
+  check(d.to_interval().inf() <= 1 + std::sqrt(2.0) && d.to_interval().sup() >= 1 + std::sqrt(2.0), "nested: to_interval");
+
+  // random a + b sqrt(c + e sqrt f) + g sqrt h against the same built another
+  // way, and against a perturbed value, signs checked against MPFR
+  std::mt19937 rng(11);
+  std::uniform_int_distribution<int> small(-9, 9), pos(1, 30);
+  int compared = 0;
+  for(int i = 0; i < 300; ++i) {
+    Nested_root_context local;
+    const int a = small(rng), b = small(rng), c = pos(rng) + 50, e = small(rng), f = pos(rng), g = small(rng), h = pos(rng);
+    const N x = N(a) + N(b) * nroot(N(c) + N(e) * nroot(N(f))) + N(g) * nroot(N(h));
+    // the same value: b sqrt(c + e sqrt f) = sqrt(b^2 c + b^2 e sqrt f) sign(b)
+    const N inner = nroot(N(b * b * c) + N(b * b * e) * nroot(N(f)));
+    const N y = N(a) + (b < 0 ? -inner : inner) + N(g) * nroot(N(4 * h)) / N(2);
+    if(!(x == y)) { ++failures; std::printf("FAIL: nested identity %d\n", i); }
+    const int k = small(rng);
+    const N z = y + N(k) * nroot(N(2)) - N(k) * nroot(N(3));
+    const CGAL::Sign expected = mpfr_sign([&](mpfr_t r) {
+      mpfr_t t;
+      mpfr_init2(t, 4096);
+      mpfr_set_si(t, 2, MPFR_RNDN); mpfr_sqrt(t, t, MPFR_RNDN); mpfr_mul_si(r, t, k, MPFR_RNDN);
+      mpfr_set_si(t, 3, MPFR_RNDN); mpfr_sqrt(t, t, MPFR_RNDN); mpfr_mul_si(t, t, k, MPFR_RNDN); mpfr_sub(r, r, t, MPFR_RNDN);
+      mpfr_clear(t);
+    });
+    if((z - x).sign() != expected) { ++failures; std::printf("FAIL: nested sign %d\n", i); }
+    ++compared;
+  }
+  std::printf("%d nested-root identities and signs\n", compared);
+}
+
 } // namespace
 
 int main()
 {
+  nested_root_tests();
   // squares of rationals stay rational
   check(root(49).is_rational() && root(49) == One_root_rational(7), "sqrt(49) = 7");
   check(sqrt(One_root_rational(Gmpq(9, 4))) == One_root_rational(Gmpq(3, 2)), "sqrt(9/4) = 3/2");

@@ -2,7 +2,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
 //
 // Interval arithmetic on MPFR numbers of a chosen precision: the second
-// stage of the filtered traits, between double intervals and CORE::Expr.
+// stage of the filtered traits, between double intervals and the exact stages.
 // Comparisons return CGAL::Uncertain<bool>, whose conversion to bool throws
 // CGAL::Uncertain_conversion_exception when the interval cannot decide, as
 // with CGAL::Interval_nt.

@@ -2,16 +2,16 @@
 // SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
 //
 // Exact numbers a + b sqrt(D), with a, b, D rational (GMP) and D > 0: the
-// third stage of the filtered traits, between the MPFR intervals and
-// CORE::Expr.  The decisions that reach it are exact ties (two equal event
+// third stage of the filtered traits, between the MPFR intervals and the
+// nested-root numbers (Nested_root_number.h).  The decisions that reach it are exact ties (two equal event
 // times, a zero discriminant).  With axis-parallel input edges (mazes, CAD
 // parts) the tangent circles are rational and an event time adds at most one
-// square root, so such ties are decided here, in rational arithmetic, instead
-// of by CORE::Expr's far slower root bounds.
+// square root, so such ties are decided here, in rational arithmetic, faster
+// than by the general nested-root numbers.
 //
 // An operation that would leave the form (two different square roots, a
 // root of a number that is not rational, a division by zero) throws
-// Not_one_root, and the caller goes on to CORE::Expr.
+// Not_one_root, and the caller goes on to the nested-root numbers.
 
 #ifndef CGAL_PROGRESSIVE_MEDIAL_AXIS_2_INTERNAL_ONE_ROOT_RATIONAL_H
 #define CGAL_PROGRESSIVE_MEDIAL_AXIS_2_INTERNAL_ONE_ROOT_RATIONAL_H

@@ -1,0 +1,448 @@
+// Copyright (c) 2026 The Progressive_medial_axis_2 authors.
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+//
+// Exact numbers built from rationals by +, -, *, / and square roots, nested
+// to any depth: the last stage of the filtered traits.  It decides the exact
+// ties that the one-root numbers (One_root_rational.h) cannot represent:
+// several unrelated roots (the lengths of oblique segments), roots of
+// numbers that hold roots (the discriminant of a PSS circle next to a
+// diagonal, and the chord of that circle), and it never gives up.
+//
+// Why not a library type.  CGAL's Sqrt_extension nests, but its operands
+// must share one root (checked only in debug builds: a release build gives
+// sqrt 8 * sqrt 2 = 8), so two independent roots at one level cannot be
+// added.  CORE::Expr is exact, but its root bounds count every square root
+// node of the expression, and a tie between two event times with ten such
+// nodes took seconds; its progressive evaluation is also a process-global
+// flag.  Here the roots of one evaluation are shared and the sign is found
+// by exact squaring, in rational arithmetic, with no precision bound.
+//
+// Representation.  A context (Nested_root_context, one per decision) holds
+// the roots r_1, r_2, ... created so far; root k is s_k = sqrt(a_k) > 0,
+// where the radicand a_k is itself a number in s_1 .. s_k-1.  A number is a
+// polynomial with rational coefficients, of degree at most one in each s_k
+// (s_k^2 is replaced by a_k), stored as (bit mask of its roots, coefficient)
+// terms.  Roots are shared: a rational radicand whose ratio to an existing
+// one is a rational square reuses that root (sqrt 8 = 2 sqrt 2), and equal
+// radicands give one root.  The roots need not be independent (a nested
+// root may denest): nothing below relies on it.
+//
+// Sign (exact): first a double-interval evaluation; if it cannot decide,
+// write the number as P + Q s_k for its highest root s_k, with P and Q free
+// of s_k; find the signs of P and Q (recursively); if they differ, the
+// sign of P^2 - Q^2 a_k (a number in fewer roots) decides.  This is the
+// one-root rule of One_root_rational.h applied root by root.
+//
+// Division rationalises the denominator, one root at a time, by the
+// conjugate; should a conjugate vanish (dependent roots), the denominator
+// equals 2P and the division goes on with that.
+
+#ifndef CGAL_PROGRESSIVE_MEDIAL_AXIS_2_INTERNAL_NESTED_ROOT_NUMBER_H
+#define CGAL_PROGRESSIVE_MEDIAL_AXIS_2_INTERNAL_NESTED_ROOT_NUMBER_H
+
+#include <CGAL/Progressive_medial_axis_2/internal/One_root_rational.h>
+
+#include <CGAL/Gmpq.h>
+#include <CGAL/Interval_nt.h>
+#include <CGAL/assertions.h>
+#include <CGAL/enum.h>
+
+#include <mpfr.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <stdexcept>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace PMA2 {
+namespace internal {
+
+typedef std::uint64_t Root_mask;
+
+/// A term of a nested-root number: a rational coefficient times the product
+/// of the roots whose bits are set in `mask`.
+struct Root_term {
+  Root_mask mask;
+  Gmpq c;
+  friend bool operator==(const Root_term& a, const Root_term& b) { return a.mask == b.mask && a.c == b.c; }
+};
+
+typedef std::vector<Root_term> Root_polynomial;
+
+inline int highest_root(Root_mask m)
+{
+  CGAL_precondition(m != 0);
+  return 63 - __builtin_clzll(m);
+}
+
+/// The roots of one exact evaluation.  Creating a context makes it the
+/// current one of the thread until it is destroyed; nested-root numbers
+/// are valid only while their context lives.
+class Nested_root_context
+{
+public:
+  Nested_root_context() : previous_(current()) { current() = this; }
+  ~Nested_root_context() { current() = previous_; }
+  Nested_root_context(const Nested_root_context&) = delete;
+  Nested_root_context& operator=(const Nested_root_context&) = delete;
+
+  static Nested_root_context*& current()
+  {
+    static thread_local Nested_root_context* c = nullptr;
+    return c;
+  }
+  static Nested_root_context& get()
+  {
+    CGAL_precondition(current() != nullptr);
+    return *current();
+  }
+
+  std::size_t number_of_roots() const { return roots_.size(); }
+
+  // ---- polynomial arithmetic ----
+
+  /// Sorts the terms by mask, adds the coefficients of equal masks and drops zeros.
+  static void normalize(Root_polynomial& v)
+  {
+    if(v.size() < 2) {
+      if(v.size() == 1 && CGAL::sign(v[0].c) == ZERO) v.clear();
+      return;
+    }
+    std::sort(v.begin(), v.end(), [](const Root_term& a, const Root_term& b) { return a.mask < b.mask; });
+    std::size_t out = 0;
+    for(std::size_t i = 0; i < v.size();) {
+      Root_term t = v[i];
+      std::size_t j = i + 1;
+      for(; j < v.size() && v[j].mask == t.mask; ++j) t.c += v[j].c;
+      if(CGAL::sign(t.c) != ZERO) v[out++] = t;
+      i = j;
+    }
+    v.resize(out);
+  }
+
+  static Root_polynomial add(const Root_polynomial& a, const Root_polynomial& b, bool subtract)
+  {
+    Root_polynomial r;
+    r.reserve(a.size() + b.size());
+    std::size_t i = 0, j = 0;
+    while(i < a.size() || j < b.size()) {
+      if(j == b.size() || (i < a.size() && a[i].mask < b[j].mask)) {
+        r.push_back(a[i++]);
+      } else if(i == a.size() || b[j].mask < a[i].mask) {
+        r.push_back(Root_term{b[j].mask, subtract ? -b[j].c : b[j].c});
+        ++j;
+      } else {
+        Gmpq c = subtract ? a[i].c - b[j].c : a[i].c + b[j].c;
+        if(CGAL::sign(c) != ZERO) r.push_back(Root_term{a[i].mask, c});
+        ++i;
+        ++j;
+      }
+    }
+    return r;
+  }
+
+  Root_polynomial multiply(const Root_polynomial& a, const Root_polynomial& b) const
+  {
+    Root_polynomial r;
+    if(a.empty() || b.empty()) return r;
+    r.reserve(a.size() * b.size());
+    for(const Root_term& x : a)
+      for(const Root_term& y : b) add_monomial_product(x.mask, y.mask, x.c * y.c, r);
+    normalize(r);
+    return r;
+  }
+
+  static Root_polynomial scale(const Root_polynomial& a, const Gmpq& q)
+  {
+    Root_polynomial r;
+    if(CGAL::sign(q) == ZERO) return r;
+    r.reserve(a.size());
+    for(const Root_term& t : a) r.push_back(Root_term{t.mask, t.c * q});
+    return r;
+  }
+
+  static bool is_rational(const Root_polynomial& a) { return a.empty() || (a.size() == 1 && a[0].mask == 0); }
+  static Gmpq rational_value(const Root_polynomial& a) { return a.empty() ? Gmpq(0) : a[0].c; }
+  static Root_polynomial constant(const Gmpq& q)
+  {
+    Root_polynomial r;
+    if(CGAL::sign(q) != ZERO) r.push_back(Root_term{0, q});
+    return r;
+  }
+
+  /// The exact sign.
+  Sign sign(const Root_polynomial& a) const
+  {
+    if(a.empty()) return ZERO;
+    // every term of one sign (the roots are positive)
+    const Sign s0 = CGAL::sign(a[0].c);
+    bool same = true;
+    for(const Root_term& t : a)
+      if(CGAL::sign(t.c) != s0) { same = false; break; }
+    if(same) return s0;
+    {
+      const Interval_nt<false> v = interval(a);
+      if(v.inf() > 0) return POSITIVE;
+      if(v.sup() < 0) return NEGATIVE;
+    }
+    Root_mask all = 0;
+    for(const Root_term& t : a) all |= t.mask;
+    const int k = highest_root(all);
+    const Root_mask bit = Root_mask(1) << k;
+    Root_polynomial P, Q;
+    for(const Root_term& t : a) {
+      if(t.mask & bit) Q.push_back(Root_term{t.mask & ~bit, t.c});
+      else P.push_back(t);
+    }
+    normalize(Q);   // removing the bit keeps the order, but be safe
+    const Sign sq = sign(Q), sp = sign(P);
+    if(sq == ZERO) return sp;
+    if(sp == ZERO || sp == sq) return sq;
+    // P + Q s_k with opposite signs: compare P^2 with Q^2 a_k
+    const Sign s = sign(add(multiply(P, P), multiply(multiply(Q, Q), radicand(k)), true));
+    return s == ZERO ? ZERO : (s == POSITIVE ? sp : sq);
+  }
+
+  /// An interval that contains the value (double precision).
+  Interval_nt<false> interval(const Root_polynomial& a) const
+  {
+    Protect_FPU_rounding<true> protection;
+    Interval_nt<false> s(0);
+    for(const Root_term& t : a) {
+      Interval_nt<false> x(CGAL::to_interval(t.c));
+      for(Root_mask m = t.mask; m != 0; m &= m - 1) x *= roots_[__builtin_ctzll(m)].value;
+      s += x;
+    }
+    return s;
+  }
+
+  /// a / b, b != 0.
+  Root_polynomial divide(const Root_polynomial& a, const Root_polynomial& b) const
+  {
+    CGAL_precondition(!b.empty());
+    if(is_rational(b)) return scale(a, Gmpq(1) / b[0].c);
+    Root_mask all = 0;
+    for(const Root_term& t : b) all |= t.mask;
+    const int k = highest_root(all);
+    const Root_mask bit = Root_mask(1) << k;
+    Root_polynomial P, Q;
+    for(const Root_term& t : b) {
+      if(t.mask & bit) Q.push_back(Root_term{t.mask & ~bit, t.c});
+      else P.push_back(t);
+    }
+    // b (P - Q s_k) = P^2 - Q^2 a_k, free of s_k
+    Root_polynomial norm = add(multiply(P, P), multiply(multiply(Q, Q), radicand(k)), true);
+    if(sign(norm) == ZERO) {
+      // P = Q s_k (b != 0): b = 2P
+      if(sign(b) == ZERO) throw std::domain_error("division by zero");
+      return divide(a, scale(P, Gmpq(2)));
+    }
+    Root_polynomial conj = P;
+    for(const Root_term& t : Q) conj.push_back(Root_term{t.mask | bit, -t.c});
+    normalize(conj);
+    return divide(multiply(a, conj), norm);
+  }
+
+  /// The non-negative square root of a >= 0.
+  Root_polynomial square_root(const Root_polynomial& a)
+  {
+    const Sign s = sign(a);
+    if(s == NEGATIVE) throw std::domain_error("square root of a negative number");
+    if(s == ZERO) return Root_polynomial();
+    if(is_rational(a)) {
+      const Gmpq q = a[0].c;
+      Gmpq r;
+      if(rational_square_root(q, r)) return constant(r);
+      // an existing root whose ratio to q is a rational square
+      for(std::size_t j = 0; j < roots_.size(); ++j) {
+        if(!roots_[j].rational) continue;
+        if(rational_square_root(q / roots_[j].q, r)) return Root_polynomial{Root_term{Root_mask(1) << j, r}};
+      }
+    } else {
+      for(std::size_t j = 0; j < roots_.size(); ++j)
+        if(!roots_[j].rational && roots_[j].radicand == a) return Root_polynomial{Root_term{Root_mask(1) << j, Gmpq(1)}};
+    }
+    if(roots_.size() >= 64) throw std::length_error("more than 64 square roots in one exact evaluation");
+    Root root;
+    root.radicand = a;
+    root.rational = is_rational(a);
+    if(root.rational) root.q = a[0].c;
+    {
+      Protect_FPU_rounding<true> protection;
+      Interval_nt<false> v = interval(a);
+      root.value = CGAL::sqrt(Interval_nt<false>((std::max)(0.0, v.inf()), (std::max)(0.0, v.sup())));
+    }
+    roots_.push_back(root);
+    return Root_polynomial{Root_term{Root_mask(1) << (roots_.size() - 1), Gmpq(1)}};
+  }
+
+  /// The value as an MPFR number, rounded to nearest, at `precision` bits
+  /// of working precision (sqrt and products rounded to nearest: an
+  /// approximation, refined by the caller).
+  void approximate(const Root_polynomial& a, mpfr_prec_t precision, mpfr_t out) const
+  {
+    std::vector<mpfr_t> roots(roots_.size());
+    for(std::size_t k = 0; k < roots_.size(); ++k) {
+      mpfr_init2(roots[k], precision);
+      evaluate(roots_[k].radicand, roots, precision, roots[k]);
+      if(mpfr_sgn(roots[k]) < 0) mpfr_set_zero(roots[k], 1);
+      mpfr_sqrt(roots[k], roots[k], MPFR_RNDN);
+    }
+    evaluate(a, roots, precision, out);
+    for(std::size_t k = 0; k < roots_.size(); ++k) mpfr_clear(roots[k]);
+  }
+
+private:
+  struct Root {
+    Root_polynomial radicand;
+    bool rational = false;
+    Gmpq q;                       // the radicand, when rational
+    Interval_nt<false> value;     // the root, as a double interval
+  };
+
+  const Root_polynomial& radicand(int k) const { return roots_[k].radicand; }
+
+  // Adds c x^a x^b to out (unnormalised), replacing s_k^2 by a_k.
+  void add_monomial_product(Root_mask a, Root_mask b, const Gmpq& c, Root_polynomial& out) const
+  {
+    const Root_mask common = a & b;
+    if(common == 0) {
+      out.push_back(Root_term{a | b, c});
+      return;
+    }
+    const int k = highest_root(common);
+    const Root_mask bit = Root_mask(1) << k;
+    a &= ~bit;
+    b &= ~bit;
+    const Root& r = roots_[k];
+    if(r.rational) {
+      add_monomial_product(a, b, c * r.q, out);
+      return;
+    }
+    // x^a x^b a_k: the radicand has only roots below k, so the common
+    // roots of each product below are below k and the recursion ends
+    Root_polynomial ab;
+    add_monomial_product(a, b, c, ab);
+    for(const Root_term& s : ab)
+      for(const Root_term& t : r.radicand) add_monomial_product(s.mask, t.mask, s.c * t.c, out);
+  }
+
+  static void evaluate(const Root_polynomial& a, const std::vector<mpfr_t>& roots, mpfr_prec_t precision, mpfr_t out)
+  {
+    mpfr_t term;
+    mpfr_init2(term, precision);
+    mpfr_set_zero(out, 1);
+    for(const Root_term& t : a) {
+      mpfr_set_q(term, t.c.mpq(), MPFR_RNDN);
+      for(Root_mask m = t.mask; m != 0; m &= m - 1) mpfr_mul(term, term, roots[__builtin_ctzll(m)], MPFR_RNDN);
+      mpfr_add(out, out, term, MPFR_RNDN);
+    }
+    mpfr_clear(term);
+  }
+
+  Nested_root_context* previous_;
+  std::vector<Root> roots_;
+};
+
+/// A number in the current Nested_root_context.
+class Nested_root_number
+{
+public:
+  Nested_root_number() {}
+  Nested_root_number(int i) : p_(Nested_root_context::constant(Gmpq(i))) {}
+  Nested_root_number(double d) : p_(Nested_root_context::constant(Gmpq(d))) {}
+  explicit Nested_root_number(const Gmpq& q) : p_(Nested_root_context::constant(q)) {}
+
+  const Root_polynomial& polynomial() const { return p_; }
+  bool is_rational() const { return Nested_root_context::is_rational(p_); }
+  Sign sign() const { return Nested_root_context::get().sign(p_); }
+
+  /// An interval of doubles that contains the value.
+  Interval_nt<false> to_interval() const
+  {
+    if(is_rational()) return CGAL::to_interval(Nested_root_context::rational_value(p_));
+    const Interval_nt<false> coarse = Nested_root_context::get().interval(p_);
+    if(coarse.sup() - coarse.inf() <= 4 * std::numeric_limits<double>::epsilon() * (std::max)(std::fabs(coarse.inf()), std::fabs(coarse.sup())))
+      return coarse;
+    // cancellation: an MPFR approximation, widened by one unit in the last place
+    const double d = to_double();
+    return Interval_nt<false>(std::nextafter(std::nextafter(d, -HUGE_VAL), -HUGE_VAL),
+                              std::nextafter(std::nextafter(d, HUGE_VAL), HUGE_VAL));
+  }
+
+  /// The value rounded to the nearest double (for irrational values, to
+  /// within the rounding of an approximation with at least 128 more bits).
+  double to_double() const
+  {
+    if(is_rational()) return CGAL::to_double(Nested_root_context::rational_value(p_));
+    double previous = 0;
+    bool first = true;
+    for(mpfr_prec_t precision = 192;; precision *= 2) {
+      mpfr_t x;
+      mpfr_init2(x, precision);
+      Nested_root_context::get().approximate(p_, precision, x);
+      const double d = mpfr_get_d(x, MPFR_RNDN);
+      mpfr_clear(x);
+      // two approximations at precisions far beyond 53 bits that round
+      // to the same double: the rounding is settled
+      if(!first && d == previous) return d;
+      if(precision >= 4096) return d;
+      previous = d;
+      first = false;
+    }
+  }
+
+  Nested_root_number operator-() const { return from(Nested_root_context::scale(p_, Gmpq(-1))); }
+
+  friend Nested_root_number operator+(const Nested_root_number& a, const Nested_root_number& b)
+  {
+    return from(Nested_root_context::add(a.p_, b.p_, false));
+  }
+  friend Nested_root_number operator-(const Nested_root_number& a, const Nested_root_number& b)
+  {
+    return from(Nested_root_context::add(a.p_, b.p_, true));
+  }
+  friend Nested_root_number operator*(const Nested_root_number& a, const Nested_root_number& b)
+  {
+    return from(Nested_root_context::get().multiply(a.p_, b.p_));
+  }
+  friend Nested_root_number operator/(const Nested_root_number& a, const Nested_root_number& b)
+  {
+    return from(Nested_root_context::get().divide(a.p_, b.p_));
+  }
+  Nested_root_number& operator+=(const Nested_root_number& b) { return *this = *this + b; }
+  Nested_root_number& operator-=(const Nested_root_number& b) { return *this = *this - b; }
+  Nested_root_number& operator*=(const Nested_root_number& b) { return *this = *this * b; }
+  Nested_root_number& operator/=(const Nested_root_number& b) { return *this = *this / b; }
+
+  friend Sign sign_of_difference(const Nested_root_number& a, const Nested_root_number& b) { return (a - b).sign(); }
+  friend bool operator<(const Nested_root_number& a, const Nested_root_number& b) { return sign_of_difference(a, b) == NEGATIVE; }
+  friend bool operator>(const Nested_root_number& a, const Nested_root_number& b) { return sign_of_difference(a, b) == POSITIVE; }
+  friend bool operator<=(const Nested_root_number& a, const Nested_root_number& b) { return sign_of_difference(a, b) != POSITIVE; }
+  friend bool operator>=(const Nested_root_number& a, const Nested_root_number& b) { return sign_of_difference(a, b) != NEGATIVE; }
+  friend bool operator==(const Nested_root_number& a, const Nested_root_number& b) { return sign_of_difference(a, b) == ZERO; }
+  friend bool operator!=(const Nested_root_number& a, const Nested_root_number& b) { return sign_of_difference(a, b) != ZERO; }
+
+  friend Nested_root_number abs(const Nested_root_number& a) { return a.sign() == NEGATIVE ? -a : a; }
+  friend Nested_root_number sqrt(const Nested_root_number& a) { return from(Nested_root_context::get().square_root(a.p_)); }
+
+private:
+  static Nested_root_number from(Root_polynomial p)
+  {
+    Nested_root_number r;
+    r.p_ = std::move(p);
+    return r;
+  }
+
+  Root_polynomial p_;
+};
+
+} // namespace internal
+} // namespace PMA2
+} // namespace CGAL
+
+#endif // CGAL_PROGRESSIVE_MEDIAL_AXIS_2_INTERNAL_NESTED_ROOT_NUMBER_H
