@@ -361,30 +361,46 @@ public:
     return evaluate_time<Mpfr>(kind_, c_, s_, rel_, cv, t);
   }
 
-  /// Evaluates the time as alpha + sqrt(rho) in one-root numbers; throws
-  /// Not_one_root if the computation leaves that form.
-  bool evaluate_one_root(One_root_sqrt& t) const
-  {
-    To_nt_convert<One_root_rational> cv;
-    return evaluate_time<One_root_rational>(kind_, c_, s_, rel_, cv, t.alpha, &t.rho);
-  }
+  /// The time as alpha + sqrt(rho) in one-root numbers, with small
+  /// rationals when they suffice, else with Gmpq.
+  struct One_root_value {
+    bool exists = false;           // the event exists (false: the time is not an event)
+    bool small = false;            // `small` holds it
+    Small_one_root_sqrt small_value;
+    mutable std::shared_ptr<One_root_sqrt> big_value;   // holds it, or its conversion once asked for
 
-  /// The time as alpha + sqrt(rho) in one-root numbers, or null if it does
-  /// not have that form.
-  const One_root_sqrt* rational() const
+    const One_root_sqrt& big() const
+    {
+      if(!big_value)
+        big_value = std::make_shared<One_root_sqrt>(One_root_sqrt{small_value.alpha.to_gmpq(), small_value.rho.to_gmpq()});
+      return *big_value;
+    }
+    Interval to_interval() const { return small ? small_value.to_interval() : big_value->to_interval(); }
+  };
+
+  /// The time in one-root numbers, or null if it does not have that form.
+  const One_root_value* one_root() const
   {
-    if(rational_state_ == 0) {
-      rational_state_ = -1;
+    if(one_root_state_ == 0) {
+      one_root_state_ = -1;
+      auto v = std::make_shared<One_root_value>();
       try {
-        One_root_sqrt t;
-        if(evaluate_one_root(t)) {
-          rational_ = std::make_shared<One_root_sqrt>(t);
-          rational_state_ = 1;
+        try {
+          To_nt_convert<Small_one_root> cv;
+          v->exists = evaluate_time<Small_one_root>(kind_, c_, s_, rel_, cv, v->small_value.alpha, &v->small_value.rho);
+          v->small = true;
+        } catch(Small_rational_overflow&) {
+          To_nt_convert<One_root_rational> cv;
+          One_root_sqrt t;
+          v->exists = evaluate_time<One_root_rational>(kind_, c_, s_, rel_, cv, t.alpha, &t.rho);
+          v->big_value = std::make_shared<One_root_sqrt>(t);
         }
+        one_root_ = v;
+        one_root_state_ = 1;
       } catch(Not_one_root&) {
       }
     }
-    return rational_state_ > 0 ? rational_.get() : nullptr;
+    return one_root_state_ > 0 ? one_root_.get() : nullptr;
   }
 
   /// The time in nested-root numbers, in the current Nested_root_context.
@@ -398,8 +414,8 @@ public:
   Interval approx_;
   Site_2 c_, s_[3];
   Triple_relations rel_;
-  mutable std::shared_ptr<One_root_sqrt> rational_;
-  mutable signed char rational_state_ = 0; // 0 unknown, 1 rational_ holds it, -1 not rational
+  mutable std::shared_ptr<One_root_value> one_root_;
+  mutable signed char one_root_state_ = 0; // 0 unknown, 1 one_root_ holds it, -1 not a one-root number
   mutable std::shared_ptr<char> tie_;       // shared by times found exactly equal
 };
 
@@ -411,14 +427,14 @@ public:
 
 The filtered traits model: every decision is exact, and almost all are
 taken in floating point.  A decision is evaluated first in double interval
-arithmetic (`Interval_nt`), then, when the interval cannot decide, in MPFR
-interval arithmetic at 256 bits.  What that cannot decide is almost always
-an exact tie (equal event times, a zero discriminant), which is decided
-exactly:
-- in numbers alpha + sqrt(rho), where alpha and rho are a + b sqrt(D) with
-  rational a, b, D (GMP), when the computation keeps that form, as is usual
+arithmetic (`Interval_nt`).  What the intervals cannot decide is almost
+always an exact tie (equal event times, a zero discriminant), and is decided
+- in exact numbers alpha + sqrt(rho), where alpha and rho are a + b sqrt(D)
+  with rational a, b, D, when the computation keeps that form, as is usual
   with axis-parallel edges (mazes, CAD parts);
-- otherwise in nested-root numbers: polynomials with rational coefficients
+- otherwise in MPFR interval arithmetic at 256 bits, which decides the
+  near-ties that are not ties;
+- and what is left, in nested-root numbers: polynomials with rational coefficients
   in the square roots that the computation takes (segment lengths,
   discriminants, chords), each root possibly of a number holding others,
   whose sign is found by exact squaring.  This stage always decides: the
@@ -462,7 +478,7 @@ public:
   struct Filter_statistics {
     std::size_t interval_evaluations = 0;      ///< times and disks evaluated in double intervals
     std::size_t double_double_evaluations = 0; ///< disks constructed in double-double arithmetic
-    std::size_t mpfr_evaluations = 0;          ///< ... that needed MPFR intervals
+    std::size_t mpfr_evaluations = 0;          ///< ... that the double intervals could not decide
     std::size_t rational_evaluations = 0;      ///< ... that were decided in exact one-root numbers
     std::size_t exact_evaluations = 0;         ///< ... that needed the nested-root numbers
     std::size_t mpfr_comparisons = 0;          ///< comparisons of times decided by MPFR intervals
@@ -489,8 +505,8 @@ private:
       for(int i = 0; i < 3; ++i) t.s_[i] = s[i];
       t.rel_ = PMA2::internal::triple_relations<CK>(s);
     }
-    t.rational_.reset();
-    t.rational_state_ = 0;
+    t.one_root_.reset();
+    t.one_root_state_ = 0;
     t.tie_.reset();
     ++filter_statistics().interval_evaluations;
     {
@@ -518,14 +534,13 @@ private:
         return true;
       },
       [&]() -> std::optional<bool> {
-        t.rational_state_ = -1; // unless it succeeds
-        PMA2::internal::One_root_sqrt v;
-        if(!t.evaluate_one_root(v))
-          return false;
+        const typename Event_time_2::One_root_value* v = t.one_root();
+        if(v == nullptr)
+          return std::nullopt;
         ++filter_statistics().rational_evaluations;
-        t.rational_ = std::make_shared<PMA2::internal::One_root_sqrt>(v);
-        t.rational_state_ = 1;
-        t.approx_ = v.to_interval();
+        if(!v->exists)
+          return false;
+        t.approx_ = v->to_interval();
         return true;
       });
     if(decided)
@@ -571,11 +586,21 @@ private:
         return get_certain(m);
       },
       [&]() -> std::optional<Comparison_result> {
-        const PMA2::internal::One_root_sqrt* ra = a.rational();
-        const PMA2::internal::One_root_sqrt* rb = ra ? b.rational() : nullptr;
+        const typename Event_time_2::One_root_value* ra = a.one_root();
+        const typename Event_time_2::One_root_value* rb = ra ? b.one_root() : nullptr;
         if(rb == nullptr)
           return std::nullopt;
-        const Comparison_result res = Comparison_result(int(sign_of_difference(*ra, *rb)));
+        CGAL_assertion(ra->exists && rb->exists);
+        std::optional<Sign> sign;
+        if(ra->small && rb->small) {
+          try {
+            sign = sign_of_difference(ra->small_value, rb->small_value);
+          } catch(PMA2::internal::Small_rational_overflow&) {
+          }
+        }
+        if(!sign)
+          sign = sign_of_difference(ra->big(), rb->big());
+        const Comparison_result res = Comparison_result(int(*sign));
         ++filter_statistics().rational_comparisons;
         return tie(a, b, res);
       });
@@ -653,13 +678,21 @@ private:
         return true;
       },
       [&]() -> std::optional<bool> {
-        PMA2::internal::Circle_nt<PMA2::internal::One_root_rational> circle;
-        if(!disk_nt<PMA2::internal::One_root_rational>(s, rel, circle))
-          return false;
-        ++filter_statistics().rational_evaluations;
-        centre = Point_2(circle.x.to_double(), circle.y.to_double());
-        radius = circle.r.to_double();
-        return true;
+        auto one_root = [&](auto number) {
+          typedef decltype(number) N;
+          PMA2::internal::Circle_nt<N> circle;
+          if(!disk_nt<N>(s, rel, circle))
+            return false;
+          ++filter_statistics().rational_evaluations;
+          centre = Point_2(circle.x.to_double(), circle.y.to_double());
+          radius = circle.r.to_double();
+          return true;
+        };
+        try {
+          return one_root(PMA2::internal::Small_one_root());
+        } catch(PMA2::internal::Small_rational_overflow&) {
+          return one_root(PMA2::internal::One_root_rational());
+        }
       });
     if(decided)
       return *decided;
@@ -674,26 +707,26 @@ private:
   }
 
   // The stages between the double intervals and the nested-root numbers, in
-  // order: MPFR intervals, then exact one-root numbers (what MPFR cannot
-  // decide is almost always an exact tie, which the one-root numbers decide
-  // far faster when the computation keeps their form).  A stage returns its
-  // result, or nothing when it cannot decide; an undecidable MPFR comparison
-  // or a value outside the one-root form counts as nothing.
+  // order: exact one-root numbers, then MPFR intervals.  What the double
+  // intervals cannot decide is almost always an exact tie (degenerate input:
+  // integer grids, symmetric shapes), which the one-root numbers decide
+  // when the computation keeps their form, as it does with axis-parallel
+  // edges; MPFR intervals then decide the near-ties that are not ties.  On
+  // non-degenerate input the double intervals decide nearly everything, and
+  // a value outside the one-root form is found after a few operations.  A
+  // stage returns its result, or nothing when it cannot decide.
   template <class R, class Mpfr_stage, class One_root_stage>
   static std::optional<R> before_exact(const Mpfr_stage& mpfr_stage, const One_root_stage& one_root_stage)
   {
-    {
-      PMA2::internal::Mpfr_precision_scope scope(mpfr_precision);
-      try {
-        if(std::optional<R> r = mpfr_stage())
-          return r;
-      } catch(Uncertain_conversion_exception&) {
-      }
-    }
     try {
       if(std::optional<R> r = one_root_stage())
         return r;
     } catch(PMA2::internal::Not_one_root&) {
+    }
+    PMA2::internal::Mpfr_precision_scope scope(mpfr_precision);
+    try {
+      return mpfr_stage();
+    } catch(Uncertain_conversion_exception&) {
     }
     return std::nullopt;
   }

@@ -6,6 +6,7 @@
 #include <CGAL/Progressive_medial_axis_2/internal/One_root_rational.h>
 #include <CGAL/Progressive_medial_axis_2/internal/Nested_root_number.h>
 
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <random>
@@ -14,6 +15,9 @@ using CGAL::Gmpq;
 using CGAL::PMA2::internal::Not_one_root;
 using CGAL::PMA2::internal::One_root_rational;
 using CGAL::PMA2::internal::One_root_sqrt;
+using CGAL::PMA2::internal::Small_rational;
+using CGAL::PMA2::internal::Small_rational_overflow;
+using CGAL::PMA2::internal::Small_one_root;
 using CGAL::PMA2::internal::Nested_root_context;
 using CGAL::PMA2::internal::Nested_root_number;
 
@@ -120,10 +124,77 @@ void nested_root_tests()
   std::printf("%d nested-root identities and signs\n", compared);
 }
 
+// Small_rational and the one-root numbers over it agree with Gmpq, and
+// overflow is reported, never wrong.
+void small_rational_tests()
+{
+  check(Small_rational(0.75) * Small_rational(4) == Small_rational(3), "small: 0.75 * 4 = 3");
+  check((Small_rational(1) / Small_rational(3)).to_gmpq() == Gmpq(1, 3), "small: 1 / 3");
+  check((Small_rational(std::ldexp(1.0, -100)) + Small_rational(1)).to_gmpq() == Gmpq(std::ldexp(1.0, -100)) + Gmpq(1), "small: 2^-100 + 1");
+  Small_rational r;
+  check(rational_square_root(Small_rational(9) / Small_rational(16), r) && r == Small_rational(0.75), "small: sqrt(9/16)");
+  check(!rational_square_root(Small_rational(2), r), "small: 2 is not a square");
+  bool thrown = false;
+  try {
+    Small_rational x(1e18);
+    for(int i = 0; i < 4; ++i) x = x * x;
+  } catch(Small_rational_overflow&) {
+    thrown = true;
+  }
+  check(thrown, "small: overflow is reported");
+  // random expressions in both types
+  std::mt19937 rng(5);
+  std::uniform_int_distribution<int> small(-1000, 1000);
+  int compared = 0, overflows = 0;
+  for(int i = 0; i < 20000; ++i) {
+    Small_rational x(small(rng)), y(small(rng) + 0.5), z(small(rng) / 8.0);
+    Gmpq gx = x.to_gmpq(), gy = y.to_gmpq(), gz = z.to_gmpq();
+    try {
+      for(int k = 0; k < 6; ++k) {
+        const int op = small(rng) & 3;
+        if(op == 0) { x = x + y * z; gx = gx + gy * gz; }
+        else if(op == 1) { x = x - y / z; gx = gx - gy / gz; }
+        else if(op == 2) { y = x * z - y; gy = gx * gz - gy; }
+        else { z = (x + y) / (z * z + Small_rational(1)); gz = (gx + gy) / (gz * gz + Gmpq(1)); }
+        if(x.to_gmpq() != gx || y.to_gmpq() != gy || z.to_gmpq() != gz || x.sign() != CGAL::sign(gx)) {
+          ++failures;
+          std::printf("FAIL: small rational differs from Gmpq (%d)\n", i);
+          break;
+        }
+        if(CGAL::to_interval(gx).first < x.to_interval().inf() || CGAL::to_interval(gx).second > x.to_interval().sup()) {
+          ++failures;
+          std::printf("FAIL: small rational interval (%d)\n", i);
+          break;
+        }
+      }
+    } catch(Small_rational_overflow&) {
+      ++overflows;
+    }
+    ++compared;
+  }
+  // one-root numbers over small rationals against Gmpq
+  for(int i = 0; i < 5000; ++i) {
+    const int a1 = small(rng), b1 = small(rng), d1 = 1 + (small(rng) & 15), a2 = small(rng), b2 = small(rng);
+    const int d2 = (i % 2) ? d1 : 1 + (small(rng) & 15);
+    const Small_one_root p = Small_one_root(a1) + Small_one_root(b1) * sqrt(Small_one_root(d1));
+    const Small_one_root q = Small_one_root(a2) + Small_one_root(b2) * sqrt(Small_one_root(d2));
+    const One_root_rational gp = One_root_rational(a1) + One_root_rational(b1) * sqrt(One_root_rational(d1));
+    const One_root_rational gq = One_root_rational(a2) + One_root_rational(b2) * sqrt(One_root_rational(d2));
+    const bool same_root = d1 == d2 || b1 == 0 || b2 == 0;
+    if(sign_of_difference(p, q) != sign_of_difference(gp, gq) ||
+       (same_root && (p * q).to_gmpq() != gp * gq)) {
+      ++failures;
+      std::printf("FAIL: small one-root differs from Gmpq (%d)\n", i);
+    }
+  }
+  std::printf("%d small-rational expressions (%d overflowed), 5000 one-root comparisons\n", compared, overflows);
+}
+
 } // namespace
 
 int main()
 {
+  small_rational_tests();
   nested_root_tests();
   // squares of rationals stay rational
   check(root(49).is_rational() && root(49) == One_root_rational(7), "sqrt(49) = 7");

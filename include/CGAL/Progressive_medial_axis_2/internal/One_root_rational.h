@@ -1,10 +1,11 @@
 // Copyright (c) 2026 The Progressive_medial_axis_2 authors.
 // SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
 //
-// Exact numbers a + b sqrt(D), with a, b, D rational (GMP) and D > 0: the
-// third stage of the filtered traits, between the MPFR intervals and the
-// nested-root numbers (Nested_root_number.h).  The decisions that reach it are exact ties (two equal event
-// times, a zero discriminant).  With axis-parallel input edges (mazes, CAD
+// Exact numbers a + b sqrt(D), with a, b, D rational and D > 0: the stage of
+// the filtered traits after the double intervals, before the MPFR intervals
+// and the nested-root numbers (Nested_root_number.h).  The decisions that
+// reach it are almost always exact ties (two equal event times, a zero
+// discriminant).  With axis-parallel input edges (mazes, CAD
 // parts) the tangent circles are rational and an event time adds at most one
 // square root, so such ties are decided here, in rational arithmetic, faster
 // than by the general nested-root numbers.
@@ -12,9 +13,14 @@
 // An operation that would leave the form (two different square roots, a
 // root of a number that is not rational, a division by zero) throws
 // Not_one_root, and the caller goes on to the nested-root numbers.
+//
+// The numbers are written once for two rational types: Small_rational (no
+// heap, tried first) and Gmpq (when a Small_rational result overflows).
 
 #ifndef CGAL_PROGRESSIVE_MEDIAL_AXIS_2_INTERNAL_ONE_ROOT_RATIONAL_H
 #define CGAL_PROGRESSIVE_MEDIAL_AXIS_2_INTERNAL_ONE_ROOT_RATIONAL_H
+
+#include <CGAL/Progressive_medial_axis_2/internal/Small_rational.h>
 
 #include <CGAL/Gmpq.h>
 #include <CGAL/Interval_nt.h>
@@ -51,45 +57,63 @@ inline bool rational_square_root(const Gmpq& q, Gmpq& root)
   return true;
 }
 
+/// The value of a rational type as a Gmpq, its sign and an interval.
+inline const Gmpq& to_gmpq(const Gmpq& q) { return q; }
+inline Gmpq to_gmpq(const Small_rational& q) { return q.to_gmpq(); }
+inline Sign q_sign(const Gmpq& q) { return CGAL::sign(q); }
+inline Sign q_sign(const Small_rational& q) { return q.sign(); }
+inline Interval_nt<false> q_interval(const Gmpq& q) { return CGAL::to_interval(q); }
+inline Interval_nt<false> q_interval(const Small_rational& q) { return q.to_interval(); }
+
 /// sign(u + v sqrt(m)), m > 0.
-inline Sign sign_one_root(const Gmpq& u, const Gmpq& v, const Gmpq& m)
+template <class Q>
+Sign sign_one_root(const Q& u, const Q& v, const Q& m)
 {
-  const Sign su = CGAL::sign(u), sv = CGAL::sign(v);
+  const Sign su = q_sign(u), sv = q_sign(v);
   if(sv == ZERO)
     return su;
   if(su == ZERO || su == sv)
     return sv;
   // opposite signs: compare u^2 with v^2 m
-  const Sign s = CGAL::sign(u * u - v * v * m);
+  const Sign s = q_sign(u * u - v * v * m);
   return s == ZERO ? ZERO : (s == POSITIVE ? su : sv);
 }
 
-class One_root_rational
+/// a + b sqrt(d) over the rational type Q: Gmpq, or Small_rational (which
+/// throws Small_rational_overflow when a result does not fit).
+template <class Q>
+class One_root_number
 {
 public:
-  One_root_rational() {}
-  One_root_rational(int i) : a_(i) {}
-  One_root_rational(double d) : a_(d) {}
-  explicit One_root_rational(const Gmpq& a) : a_(a) {}
-  One_root_rational(const Gmpq& a, const Gmpq& b, const Gmpq& d) : a_(a), b_(b), d_(d)
+  One_root_number() {}
+  One_root_number(int i) : a_(i) {}
+  One_root_number(double d) : a_(d) {}
+  explicit One_root_number(const Q& a) : a_(a) {}
+  One_root_number(const Q& a, const Q& b, const Q& d) : a_(a), b_(b), d_(d)
   {
-    if(CGAL::sign(b_) == ZERO)
-      d_ = Gmpq(0);
+    if(q_sign(b_) == ZERO)
+      d_ = Q(0);
   }
 
-  const Gmpq& a() const { return a_; }
-  const Gmpq& b() const { return b_; }
-  const Gmpq& d() const { return d_; } ///< 0 for a rational number
-  bool is_rational() const { return CGAL::sign(b_) == ZERO; }
+  const Q& a() const { return a_; }
+  const Q& b() const { return b_; }
+  const Q& d() const { return d_; } ///< 0 for a rational number
+  bool is_rational() const { return q_sign(b_) == ZERO; }
   Sign sign() const { return sign_one_root(a_, b_, d_); }
+
+  /// The same number with Gmpq coefficients.
+  One_root_number<Gmpq> to_gmpq() const
+  {
+    return One_root_number<Gmpq>(internal::to_gmpq(a_), internal::to_gmpq(b_), internal::to_gmpq(d_));
+  }
 
   /// An interval that contains the value.
   Interval_nt<false> to_interval() const
   {
     Protect_FPU_rounding<true> protection;
-    Interval_nt<false> r(CGAL::to_interval(a_));
+    Interval_nt<false> r(q_interval(a_));
     if(!is_rational())
-      r += Interval_nt<false>(CGAL::to_interval(b_)) * CGAL::sqrt(Interval_nt<false>(CGAL::to_interval(d_)));
+      r += Interval_nt<false>(q_interval(b_)) * CGAL::sqrt(Interval_nt<false>(q_interval(d_)));
     return r;
   }
 
@@ -98,19 +122,21 @@ public:
   double to_double() const
   {
     mpfr_t x;
+    const Gmpq a = internal::to_gmpq(a_);
     if(is_rational()) {
       mpfr_init2(x, 53);
-      mpfr_set_q(x, a_.mpq(), MPFR_RNDN);
+      mpfr_set_q(x, a.mpq(), MPFR_RNDN);
     } else {
       // a + b sqrt(d) at 256 bits
+      const Gmpq b = internal::to_gmpq(b_), d = internal::to_gmpq(d_);
       mpfr_t y;
       mpfr_init2(x, 256);
       mpfr_init2(y, 256);
-      mpfr_set_q(x, d_.mpq(), MPFR_RNDN);
+      mpfr_set_q(x, d.mpq(), MPFR_RNDN);
       mpfr_sqrt(x, x, MPFR_RNDN);
-      mpfr_set_q(y, b_.mpq(), MPFR_RNDN);
+      mpfr_set_q(y, b.mpq(), MPFR_RNDN);
       mpfr_mul(x, x, y, MPFR_RNDN);
-      mpfr_set_q(y, a_.mpq(), MPFR_RNDN);
+      mpfr_set_q(y, a.mpq(), MPFR_RNDN);
       mpfr_add(x, x, y, MPFR_RNDN);
       mpfr_clear(y);
     }
@@ -119,92 +145,92 @@ public:
     return r;
   }
 
-  One_root_rational operator-() const { return One_root_rational(-a_, -b_, d_); }
+  One_root_number operator-() const { return One_root_number(-a_, -b_, d_); }
 
-  friend One_root_rational operator+(const One_root_rational& x, const One_root_rational& y)
+  friend One_root_number operator+(const One_root_number& x, const One_root_number& y)
   {
-    Gmpq yb, d;
+    Q yb, d;
     align(x, y, yb, d);
-    return One_root_rational(x.a_ + y.a_, x.b_ + yb, d);
+    return One_root_number(x.a_ + y.a_, x.b_ + yb, d);
   }
-  friend One_root_rational operator-(const One_root_rational& x, const One_root_rational& y) { return x + (-y); }
-  friend One_root_rational operator*(const One_root_rational& x, const One_root_rational& y)
+  friend One_root_number operator-(const One_root_number& x, const One_root_number& y) { return x + (-y); }
+  friend One_root_number operator*(const One_root_number& x, const One_root_number& y)
   {
-    Gmpq yb, d;
+    Q yb, d;
     align(x, y, yb, d);
-    return One_root_rational(x.a_ * y.a_ + x.b_ * yb * d, x.a_ * yb + x.b_ * y.a_, d);
+    return One_root_number(x.a_ * y.a_ + x.b_ * yb * d, x.a_ * yb + x.b_ * y.a_, d);
   }
-  friend One_root_rational operator/(const One_root_rational& x, const One_root_rational& y)
+  friend One_root_number operator/(const One_root_number& x, const One_root_number& y)
   {
     // multiply by the conjugate of y
-    const Gmpq n = y.a_ * y.a_ - y.b_ * y.b_ * y.d_;
-    if(CGAL::sign(n) == ZERO)
+    const Q n = y.a_ * y.a_ - y.b_ * y.b_ * y.d_;
+    if(q_sign(n) == ZERO)
       throw Not_one_root();
-    const One_root_rational conj(y.a_ / n, -y.b_ / n, y.d_);
+    const One_root_number conj(y.a_ / n, -y.b_ / n, y.d_);
     return x * conj;
   }
-  One_root_rational& operator+=(const One_root_rational& y) { return *this = *this + y; }
-  One_root_rational& operator-=(const One_root_rational& y) { return *this = *this - y; }
-  One_root_rational& operator*=(const One_root_rational& y) { return *this = *this * y; }
-  One_root_rational& operator/=(const One_root_rational& y) { return *this = *this / y; }
+  One_root_number& operator+=(const One_root_number& y) { return *this = *this + y; }
+  One_root_number& operator-=(const One_root_number& y) { return *this = *this - y; }
+  One_root_number& operator*=(const One_root_number& y) { return *this = *this * y; }
+  One_root_number& operator/=(const One_root_number& y) { return *this = *this / y; }
 
   /// The sign of x - y; x and y may have different roots.
-  friend Sign sign_of_difference(const One_root_rational& x, const One_root_rational& y)
+  friend Sign sign_of_difference(const One_root_number& x, const One_root_number& y)
   {
     if(x.is_rational() || y.is_rational() || x.d_ == y.d_ || roots_commensurable(x, y)) {
-      const One_root_rational z = x - y;
+      const One_root_number z = x - y;
       return sign_one_root(z.a_, z.b_, z.d_);
     }
     // L = (x.a - y.a) + x.b sqrt(x.d), R = y.b sqrt(y.d): sign(L - R)
-    const Gmpq A = x.a_ - y.a_;
-    const Sign sl = sign_one_root(A, x.b_, x.d_), sr = CGAL::sign(y.b_);
+    const Q A = x.a_ - y.a_;
+    const Sign sl = sign_one_root(A, x.b_, x.d_), sr = q_sign(y.b_);
     if(sl != sr || sl == ZERO)
       return sl > sr ? POSITIVE : (sl < sr ? NEGATIVE : ZERO);
     // same sign s: sign(L - R) = s sign(L^2 - R^2)
-    const Sign s2 = sign_one_root(A * A + x.b_ * x.b_ * x.d_ - y.b_ * y.b_ * y.d_, Gmpq(2) * A * x.b_, x.d_);
+    const Sign s2 = sign_one_root(A * A + x.b_ * x.b_ * x.d_ - y.b_ * y.b_ * y.d_, Q(2) * A * x.b_, x.d_);
     return sl == POSITIVE ? s2 : Sign(-int(s2));
   }
 
-  friend bool operator<(const One_root_rational& x, const One_root_rational& y) { return sign_of_difference(x, y) == NEGATIVE; }
-  friend bool operator>(const One_root_rational& x, const One_root_rational& y) { return sign_of_difference(x, y) == POSITIVE; }
-  friend bool operator<=(const One_root_rational& x, const One_root_rational& y) { return sign_of_difference(x, y) != POSITIVE; }
-  friend bool operator>=(const One_root_rational& x, const One_root_rational& y) { return sign_of_difference(x, y) != NEGATIVE; }
-  friend bool operator==(const One_root_rational& x, const One_root_rational& y) { return sign_of_difference(x, y) == ZERO; }
-  friend bool operator!=(const One_root_rational& x, const One_root_rational& y) { return sign_of_difference(x, y) != ZERO; }
+  friend bool operator<(const One_root_number& x, const One_root_number& y) { return sign_of_difference(x, y) == NEGATIVE; }
+  friend bool operator>(const One_root_number& x, const One_root_number& y) { return sign_of_difference(x, y) == POSITIVE; }
+  friend bool operator<=(const One_root_number& x, const One_root_number& y) { return sign_of_difference(x, y) != POSITIVE; }
+  friend bool operator>=(const One_root_number& x, const One_root_number& y) { return sign_of_difference(x, y) != NEGATIVE; }
+  friend bool operator==(const One_root_number& x, const One_root_number& y) { return sign_of_difference(x, y) == ZERO; }
+  friend bool operator!=(const One_root_number& x, const One_root_number& y) { return sign_of_difference(x, y) != ZERO; }
 
-  friend One_root_rational abs(const One_root_rational& x) { return x < One_root_rational(0) ? -x : x; }
+  friend One_root_number abs(const One_root_number& x) { return x < One_root_number(0) ? -x : x; }
 
   /// The square root of a rational number; throws Not_one_root otherwise.
-  friend One_root_rational sqrt(const One_root_rational& x)
+  friend One_root_number sqrt(const One_root_number& x)
   {
-    if(!x.is_rational() || CGAL::sign(x.a_) == NEGATIVE)
+    if(!x.is_rational() || q_sign(x.a_) == NEGATIVE)
       throw Not_one_root();
-    Gmpq r;
+    Q r;
     if(rational_square_root(x.a_, r))
-      return One_root_rational(r);
-    return One_root_rational(Gmpq(0), Gmpq(1), x.a_);
+      return One_root_number(r);
+    return One_root_number(Q(0), Q(1), x.a_);
   }
 
 private:
   // sqrt(x.d) / sqrt(y.d) is rational
-  static bool roots_commensurable(const One_root_rational& x, const One_root_rational& y)
+  static bool roots_commensurable(const One_root_number& x, const One_root_number& y)
   {
-    Gmpq r;
+    Q r;
     return rational_square_root(x.d_ / y.d_, r);
   }
 
   // y's root coefficient over x's root (yb), and the common root d
-  static void align(const One_root_rational& x, const One_root_rational& y, Gmpq& yb, Gmpq& d)
+  static void align(const One_root_number& x, const One_root_number& y, Q& yb, Q& d)
   {
     if(y.is_rational()) {
-      yb = Gmpq(0);
+      yb = Q(0);
       d = x.d_;
     } else if(x.is_rational() || x.d_ == y.d_) {
       yb = y.b_;
       d = y.d_;
     } else {
       // sqrt(y.d) = k sqrt(x.d) with k = sqrt(y.d / x.d) rational, or give up
-      Gmpq k;
+      Q k;
       if(!rational_square_root(y.d_ / x.d_, k))
         throw Not_one_root();
       yb = y.b_ * k;
@@ -212,11 +238,15 @@ private:
     }
   }
 
-  Gmpq a_, b_, d_;
+  Q a_, b_, d_;
 };
 
+typedef One_root_number<Gmpq> One_root_rational;
+typedef One_root_number<Small_rational> Small_one_root;
+
 /// sign(B + C sqrt(rho)), rho >= 0.
-inline Sign sign_plus_root(const One_root_rational& B, const One_root_rational& C, const One_root_rational& rho)
+template <class N>
+Sign sign_plus_root(const N& B, const N& C, const N& rho)
 {
   const Sign sb = B.sign(), sc = C.sign();
   if(sc == ZERO || rho.sign() == ZERO)
@@ -230,8 +260,9 @@ inline Sign sign_plus_root(const One_root_rational& B, const One_root_rational& 
 /// An event time alpha + sqrt(rho) with alpha and rho one-root numbers and
 /// rho >= 0: a vanishing time (the far end of a chord of a circle whose
 /// centre and radius are one-root numbers) or, with rho = 0, any other time.
-struct One_root_sqrt {
-  One_root_rational alpha, rho;
+template <class N>
+struct One_root_sqrt_t {
+  N alpha, rho;
 
   Interval_nt<false> to_interval() const
   {
@@ -244,10 +275,10 @@ struct One_root_sqrt {
 
   /// The sign of x - y.  Throws Not_one_root when the numbers of x and y
   /// do not share a root.
-  friend Sign sign_of_difference(const One_root_sqrt& x, const One_root_sqrt& y)
+  friend Sign sign_of_difference(const One_root_sqrt_t& x, const One_root_sqrt_t& y)
   {
-    const One_root_rational A = x.alpha - y.alpha;
-    const One_root_rational one(1), minus_one(-1), two(2);
+    const N A = x.alpha - y.alpha;
+    const N one(1), minus_one(-1), two(2);
     if(y.rho.sign() == ZERO)
       return sign_plus_root(A, one, x.rho);
     if(x.rho.sign() == ZERO)
@@ -263,6 +294,9 @@ struct One_root_sqrt {
     return Sign(-int(sign_plus_root(A * A + y.rho - x.rho, minus_one * two * A, y.rho)));
   }
 };
+
+typedef One_root_sqrt_t<One_root_rational> One_root_sqrt;
+typedef One_root_sqrt_t<Small_one_root> Small_one_root_sqrt;
 
 } // namespace internal
 } // namespace PMA2
