@@ -353,19 +353,34 @@ public:
   const Interval& approx() const { return approx_; }
   double to_double() const { return CGAL::to_double(approx_); }
 
-  /// The time in MPFR intervals at the current MPFR precision.
-  /// Throws `Uncertain_conversion_exception` if a branch cannot be decided.
-  bool mpfr(Mpfr& t) const
+  /// The time in MPFR intervals at the current MPFR precision, computed
+  /// once: -1 if a branch of the computation cannot be decided, 0 if the
+  /// event does not exist, 1 if `*value` holds the time.
+  int mpfr(const Mpfr** value) const
   {
-    To_nt_convert<Mpfr> cv;
-    return evaluate_time<Mpfr>(kind_, c_, s_, rel_, cv, t);
+    if(mpfr_state_ == 2) {
+      mpfr_state_ = -1;
+      try {
+        To_nt_convert<Mpfr> cv;
+        Mpfr t;
+        if(evaluate_time<Mpfr>(kind_, c_, s_, rel_, cv, t)) {
+          mpfr_ = std::make_shared<Mpfr>(t);
+          mpfr_state_ = 1;
+        } else {
+          mpfr_state_ = 0;
+        }
+      } catch(Uncertain_conversion_exception&) {
+      }
+    }
+    *value = mpfr_.get();
+    return mpfr_state_;
   }
 
   /// The time as alpha + sqrt(rho) in one-root numbers, with small
   /// rationals when they suffice, else with Gmpq.
   struct One_root_value {
     bool exists = false;           // the event exists (false: the time is not an event)
-    bool small = false;            // `small` holds it
+    bool small = false;            // `small_value` holds it
     Small_one_root_sqrt small_value;
     mutable std::shared_ptr<One_root_sqrt> big_value;   // holds it, or its conversion once asked for
 
@@ -386,6 +401,8 @@ public:
       auto v = std::make_shared<One_root_value>();
       try {
         try {
+          if(!short_coordinates())
+            throw Small_rational_overflow();
           To_nt_convert<Small_one_root> cv;
           v->exists = evaluate_time<Small_one_root>(kind_, c_, s_, rel_, cv, v->small_value.alpha, &v->small_value.rho);
           v->small = true;
@@ -403,6 +420,30 @@ public:
     return one_root_state_ > 0 ? one_root_.get() : nullptr;
   }
 
+  /// Whether the coordinates of the sites span at most 24 bits (integers
+  /// of a grid, short binary fractions): the computation then fits in
+  /// Small_rational, and otherwise almost surely overflows it.
+  bool short_coordinates() const
+  {
+    int lowest = std::numeric_limits<int>::max(), highest = std::numeric_limits<int>::min();
+    auto add = [&](double x) {
+      if(x == 0) return;
+      int e;
+      const double m = std::frexp(x, &e);
+      const std::int64_t mi = std::int64_t(std::ldexp(m, 53));
+      highest = (std::max)(highest, e);
+      lowest = (std::min)(lowest, e - 53 + __builtin_ctzll(std::uint64_t(mi < 0 ? -mi : mi)));
+    };
+    auto add_site = [&](const Site_2& x) {
+      add(CGAL::to_double(x.p.x())); add(CGAL::to_double(x.p.y()));
+      add(CGAL::to_double(x.q.x())); add(CGAL::to_double(x.q.y()));
+    };
+    add_site(c_);
+    if(kind_ > TIME_END)
+      for(int i = 0; i < 3; ++i) add_site(s_[i]);
+    return highest - lowest <= 24;
+  }
+
   /// The time in nested-root numbers, in the current Nested_root_context.
   bool nested(Nested_root_number& t) const
   {
@@ -414,6 +455,8 @@ public:
   Interval approx_;
   Site_2 c_, s_[3];
   Triple_relations rel_;
+  mutable std::shared_ptr<Mpfr> mpfr_;
+  mutable signed char mpfr_state_ = 2;     // 2 not computed yet, else as returned by mpfr()
   mutable std::shared_ptr<One_root_value> one_root_;
   mutable signed char one_root_state_ = 0; // 0 unknown, 1 one_root_ holds it, -1 not a one-root number
   mutable std::shared_ptr<char> tie_;       // shared by times found exactly equal
@@ -507,6 +550,8 @@ private:
     }
     t.one_root_.reset();
     t.one_root_state_ = 0;
+    t.mpfr_.reset();
+    t.mpfr_state_ = 2;
     t.tie_.reset();
     ++filter_statistics().interval_evaluations;
     {
@@ -527,10 +572,13 @@ private:
     ++filter_statistics().mpfr_evaluations;
     const std::optional<bool> decided = before_exact<bool>(
       [&]() -> std::optional<bool> {
-        Mpfr v;
-        if(!t.mpfr(v))
+        const Mpfr* v;
+        const int state = t.mpfr(&v);
+        if(state < 0)
+          return std::nullopt;
+        if(state == 0)
           return false;
-        t.approx_ = v.to_interval();
+        t.approx_ = v->to_interval();
         return true;
       },
       [&]() -> std::optional<bool> {
@@ -576,10 +624,10 @@ private:
       return EQUAL;
     const std::optional<Comparison_result> decided = before_exact<Comparison_result>(
       [&]() -> std::optional<Comparison_result> {
-        Mpfr va, vb;
-        if(!a.mpfr(va) || !b.mpfr(vb))
+        const Mpfr *va, *vb;
+        if(a.mpfr(&va) != 1 || b.mpfr(&vb) != 1)
           return std::nullopt;
-        Uncertain<Comparison_result> m = compare(va, vb);
+        Uncertain<Comparison_result> m = compare(*va, *vb);
         if(!is_certain(m))
           return std::nullopt;
         ++filter_statistics().mpfr_comparisons;

@@ -1,11 +1,14 @@
 # The medial axis against the Segment_Delaunay_graph_2 oracle.
 pma_add_test_program(test_medial_axis_oracle)
-add_test(NAME oracle_filtered COMMAND test_medial_axis_oracle)
+add_test(NAME oracle_filtered COMMAND test_medial_axis_oracle --only regressions,random,holes,data)
+# Degenerate input (integer grids, Hilbert, Koch, regular polygons, glyphs):
+# every exact tie decided, against the oracle.
+add_test(NAME oracle_degenerate COMMAND test_medial_axis_oracle --only degenerate)
 # The double-precision model is not exact: its decisions on the nearly
 # degenerate sliver (edges 1e-10 off a line) differ from the exact ones.
 add_test(NAME oracle_epick COMMAND test_medial_axis_oracle --traits epick --quick --skip syn_sliver500)
 add_test(NAME oracle_exact COMMAND test_medial_axis_oracle --traits exact --quick --only random)
-set_tests_properties(oracle_filtered oracle_epick oracle_exact PROPERTIES TIMEOUT 1800)
+set_tests_properties(oracle_filtered oracle_degenerate oracle_epick oracle_exact PROPERTIES TIMEOUT 1800)
 
 # The command-line tool's contract, against the oracle program sdg_pairs
 # (defined in oracle.cmake).

@@ -3,7 +3,8 @@
 // them, and on the shapes shipped in data/; checks the invariants of the
 // axis at every step compared.
 //
-//   test_medial_axis_oracle [--quick] [--only random|holes|data|regressions] [--skip SHAPE]
+//   test_medial_axis_oracle [--quick] [--only SECTION,...] [--skip SHAPE]
+//       sections: regressions, random, holes, data, degenerate
 //                           [--traits filtered|epick|exact] [--seed-base N]
 //
 // On a failure it prints the seed and the polygon as WKT, to be minimised
@@ -15,6 +16,7 @@
 
 #include <pma_test/sdg_oracle.h>
 #include <pma_test/random_polygons.h>
+#include <pma_test/degenerate_shapes.h>
 #include <pma_test/compare_curves.h>
 
 #include <algorithm>
@@ -331,6 +333,67 @@ void data_tests(Checker<Traits>& checker, const Options& o)
   }
 }
 
+// Degenerate input, where exact ties are the rule: polygons of integer grid
+// cells with and without holes and with 45-degree cuts, a closed Hilbert
+// curve, nested Koch snowflakes with exact and decimal-rounded coordinates,
+// regular polygons (also with holes), many concyclic vertices, flattened
+// font glyphs.  Every tie must be decided exactly (same pairs as the
+// oracle); the grid shapes are also compared at every 50th step.
+template <class Traits>
+void degenerate_tests(Checker<Traits>& checker, const Options& o)
+{
+  struct Shape {
+    std::string name;
+    Rings rings;
+    bool every_50th;
+  };
+  std::vector<Shape> shapes;
+  const int seeds = o.quick ? 2 : 16;
+  for(int seed = 1; seed <= seeds; ++seed) {
+    pma_test::Grid_cell_options few;
+    few.holes = 3;
+    shapes.push_back({"grid cells 30x30 seed " + std::to_string(seed), pma_test::grid_cell_polygon(seed, 30, false), true});
+    shapes.push_back({"grid cells 30x30 with holes seed " + std::to_string(seed), pma_test::grid_cell_polygon(seed, 30, true, few), true});
+    pma_test::Grid_cell_options flat = few;
+    flat.keep_flat_vertices = true;
+    flat.scale = 3;
+    shapes.push_back({"grid cells 10x10, flat vertices, scale 3, seed " + std::to_string(seed), pma_test::grid_cell_polygon(seed, 10, true, flat), false});
+    shapes.push_back({"grid cells 45-degree cuts seed " + std::to_string(seed), pma_test::grid_cell_polygon_45(seed, 20), true});
+    shapes.push_back({"concyclic seed " + std::to_string(seed), pma_test::concyclic_polygon(seed, 24 + 8 * seed), false});
+  }
+  shapes.push_back({"syn_maze20", CGAL::PMA2::read_polygon_file<Point>(std::string(PMA_TEST_DATA) + "/syn_maze20.wkt"), true});
+  shapes.push_back({"hilbert order 4", pma_test::hilbert_polygon(4), true});
+  shapes.push_back({"hilbert order 5, no flat vertices", pma_test::hilbert_polygon(5, false), false});
+  shapes.push_back({"koch order 3 exact", pma_test::koch_snowflake_nested(3, -1), false});
+  shapes.push_back({"koch order 3, 6 decimals", pma_test::koch_snowflake_nested(3, 6), false});
+  shapes.push_back({"koch order 4, 6 decimals", pma_test::koch_snowflake_nested(4, 6), false});
+  for(int n : {5, 6, 8, 12, 60})
+    shapes.push_back({"regular " + std::to_string(n) + "-gon, 6 decimals", pma_test::regular_ngon(n, 10.0, 6), false});
+  shapes.push_back({"regular 96-gon", pma_test::regular_ngon(96, 1.0, -1), false});
+  shapes.push_back({"regular 24-gon with 6 holes", pma_test::regular_ngon_with_holes(24, 6, 8, 10.0, 6), false});
+  for(const std::string& f : list_wkt(std::string(PMA_TEST_DATA) + "/glyphs"))
+    shapes.push_back({f.substr(f.find_last_of('/') + 1), CGAL::PMA2::read_polygon_file<Point>(f), false});
+
+  for(const Shape& shape : shapes) {
+    if(shape.every_50th) {
+      typedef CGAL::Progressive_medial_axis_2<Traits> PMA;
+      typename PMA::Rings converted;
+      for(const auto& r : shape.rings) {
+        converted.emplace_back();
+        for(const Point& p : r) converted.back().push_back(typename PMA::Point_2(p.x(), p.y()));
+      }
+      PMA pma(converted);
+      std::vector<double> fractions;
+      for(std::size_t s = 50; s < pma.number_of_steps(); s += 50) fractions.push_back(double(s) / double(pma.number_of_steps()));
+      run_polygon(checker, shape.rings, shape.name, false, fractions);
+    } else {
+      run_polygon(checker, shape.rings, shape.name, false, {0.5});
+    }
+    if(failures > 20) return;
+  }
+  std::cout << "degenerate: " << shapes.size() << " shapes\n";
+}
+
 template <class Traits>
 void regression_tests(Checker<Traits>& checker, const Options&)
 {
@@ -348,10 +411,18 @@ int run_all(const Options& o)
 {
   Checker<Traits> checker;
   auto start = std::chrono::steady_clock::now();
-  if(o.only.empty() || o.only == "regressions") regression_tests(checker, o);
-  if(o.only.empty() || o.only == "random") random_tests(checker, o);
-  if(o.only.empty() || o.only == "holes") hole_tests(checker, o);
-  if(o.only.empty() || o.only == "data") data_tests(checker, o);
+  auto wanted = [&](const std::string& section) {
+    return o.only.empty() || ("," + o.only + ",").find("," + section + ",") != std::string::npos;
+  };
+  if(wanted("regressions")) regression_tests(checker, o);
+  if(wanted("random")) random_tests(checker, o);
+  if(wanted("holes")) hole_tests(checker, o);
+  if(wanted("data")) data_tests(checker, o);
+  if(wanted("degenerate")) {
+    // the double model does not promise the exact axis on degenerate input
+    if(Traits::Has_exact_decisions) degenerate_tests(checker, o);
+    else std::cout << "degenerate: skipped (decisions are not exact)\n";
+  }
   std::cout << checker.comparisons << " comparisons with the oracle, " << failures << " failures, "
             << std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() << " s\n";
   return failures == 0 ? 0 : 1;
