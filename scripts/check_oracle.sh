@@ -7,7 +7,7 @@ set -uo pipefail
 cd "$(dirname "$0")/.."
 traits=filtered
 if [ "${1:-}" = "--traits" ]; then traits=$2; shift 2; fi
-tool=build/examples/Progressive_medial_axis_2/progressive_medial_axis
+tool=build/tool/Progressive_medial_axis_2/progressive_medial_axis
 oracle=build/test/Progressive_medial_axis_2/sdg_pairs
 compare=build/test/Progressive_medial_axis_2/compare_pairs
 tmp=$(mktemp -d)

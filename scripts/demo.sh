@@ -9,7 +9,7 @@ cmake -S . -B build -DCMAKE_BUILD_TYPE=Release > build-configure.log
 cmake --build build -j2 --target progressive_medial_axis
 mkdir -p out
 shape=examples/Progressive_medial_axis_2/data/maze20.wkt
-build/examples/Progressive_medial_axis_2/progressive_medial_axis --stats \
+build/tool/Progressive_medial_axis_2/progressive_medial_axis --stats \
   --frames 8 --frames-prefix out/maze20_step \
   --svg out/maze20_axis.svg --geojson out/maze20_axis.geojson --wkt-out out/maze20_axis.wkt \
   "$shape"

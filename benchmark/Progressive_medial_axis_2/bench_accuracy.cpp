@@ -28,7 +28,7 @@
 //                  Field_with_sqrt_tag>, constructed exactly and rounded with
 //                  CGAL::to_double
 //
-// E(x) is computed by CGAL::PMA2::medial_point_error (distances in 256-bit intervals).
+// E(x) is computed by CGAL::Progressive_medial_axes::medial_point_error (distances in 256-bit intervals).
 // topology: for pma_*, "same" if the medial curves of that run match the oracle's
 // (pma_test::sdg_medial_axis, compared by pma_test::compare_curves with the degenerate
 // tolerance), else "differs (N curves)" with N the number of unmatched or mismatched
@@ -47,7 +47,7 @@
 
 #include <CGAL/Progressive_medial_axis_2.h>
 #include <CGAL/Progressive_medial_axis_2/Accuracy.h>
-#include <CGAL/Progressive_medial_axis_2/IO/medial_axis_io.h>
+#include <pma_tool/medial_axis_io.h>
 
 #include "bench_common.h"
 
@@ -69,7 +69,7 @@
 namespace {
 
 using namespace pma_bench;
-using CGAL::PMA2::Accuracy_site;
+using CGAL::Progressive_medial_axes::Accuracy_site;
 
 const std::vector<std::string> all_methods = {"pma_filtered", "pma_epick", "pma_exact",
                                               "floor",        "sdg_filtered", "sdg_exact"};
@@ -97,20 +97,15 @@ Row run_pma(const Rings& rings, const pma_test::Oracle_result* oracle, bool floo
 {
   typedef CGAL::Progressive_medial_axis_2<Traits> PMA;
   typedef typename PMA::Medial_axis MA;
-  typename PMA::Rings r;
-  for(const auto& ring : rings) {
-    r.emplace_back();
-    for(const Point& p : ring) r.back().push_back(typename PMA::Point_2(p.x(), p.y()));
-  }
   const double t0 = now();
-  PMA pma(r);
+  PMA pma(rings);
   pma.refine_all();
   const MA& ma = pma.medial_axis();
   Row row;
-  row.errors = floor ? CGAL::PMA2::floor_branch_point_errors(ma) : CGAL::PMA2::branch_point_errors(ma);
+  row.errors = floor ? CGAL::Progressive_medial_axes::floor_branch_point_errors(ma) : CGAL::Progressive_medial_axes::branch_point_errors(ma);
   const double t = now() - t0;
-  const CGAL::PMA2::Generator_names<MA> names(ma, CGAL::PMA2::Generator_names<MA>::INPUT);
-  const auto curves = CGAL::PMA2::named_curves(ma, names);
+  const pma_tool::Generator_names<MA> names(ma, pma_tool::Generator_names<MA>::INPUT);
+  const auto curves = pma_tool::named_curves(ma, names);
   if(!floor) {
     if(!oracle) {
       row.topology = "no oracle";
@@ -184,7 +179,7 @@ Row run_sdg(const Rings& rings, const pma_test::Oracle_result* oracle)
       g.push_back(Accuracy_site{S.is_point, a.x(), a.y(), b.x(), b.y()});
     }
     const typename SDG::Point_2 v = in.vertex(f);
-    row.errors.push_back(CGAL::PMA2::medial_point_error(CGAL::to_double(v.x()), CGAL::to_double(v.y()), g));
+    row.errors.push_back(CGAL::Progressive_medial_axes::medial_point_error(CGAL::to_double(v.x()), CGAL::to_double(v.y()), g));
   }
   const double t_vertices = now() - t1;
   char b[160];
@@ -196,11 +191,11 @@ Row run_sdg(const Rings& rings, const pma_test::Oracle_result* oracle)
 
 Row run_method(const std::string& m, const Rings& rings, const pma_test::Oracle_result* oracle)
 {
-  if(m == "pma_filtered") return run_pma<CGAL::Progressive_medial_axis_filtered_traits_2<> >(rings, oracle, false);
-  if(m == "pma_epick") return run_pma<CGAL::Progressive_medial_axis_traits_2<CGAL::Epick> >(rings, oracle, false);
+  if(m == "pma_filtered") return run_pma<CGAL::Progressive_medial_axis_traits_2<CGAL::Epick> >(rings, oracle, false);
+  if(m == "pma_epick") return run_pma<CGAL::Progressive_medial_axis_traits_2<CGAL::Simple_cartesian<double> > >(rings, oracle, false);
   if(m == "pma_exact")
     return run_pma<CGAL::Progressive_medial_axis_traits_2<CGAL::Simple_cartesian<CORE::Expr> > >(rings, oracle, false);
-  if(m == "floor") return run_pma<CGAL::Progressive_medial_axis_filtered_traits_2<> >(rings, oracle, true);
+  if(m == "floor") return run_pma<CGAL::Progressive_medial_axis_traits_2<CGAL::Epick> >(rings, oracle, true);
   if(m == "sdg_filtered") return run_sdg<Sdg>(rings, oracle);
   if(m == "sdg_exact") return run_sdg<Sdg_exact>(rings, oracle);
   throw std::runtime_error("unknown method " + m);
@@ -269,7 +264,7 @@ int main(int argc, char** argv)
         [&]() {
           const Row row = run_method(m, rings, oracle.get());
           dump_errors(row.errors, dump);
-          const CGAL::PMA2::Accuracy_statistics s = CGAL::PMA2::accuracy_statistics(row.errors);
+          const CGAL::Progressive_medial_axes::Accuracy_statistics s = CGAL::Progressive_medial_axes::accuracy_statistics(row.errors);
           char b[256];
           std::snprintf(b, sizeof(b), "%zu\t%.6g\t%.6g\t%.6g\t", s.count, s.mean, s.standard_deviation, s.max);
           return std::string(b) + row.topology + "\t" + row.note;

@@ -13,7 +13,7 @@
 #ifndef PMA_BENCH_COMMON_H
 #define PMA_BENCH_COMMON_H
 
-#include <CGAL/Progressive_medial_axis_2/IO/polygon_io.h>
+#include <pma_tool/polygon_io.h>
 
 #include <CGAL/CORE_Expr.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -76,7 +76,7 @@ inline std::string base_name(const std::string& path)
   return b.substr(0, b.find_last_of('.'));
 }
 
-inline Rings read_rings(const std::string& file) { return CGAL::PMA2::read_polygon_file<Point>(file); }
+inline Rings read_rings(const std::string& file) { return pma_tool::read_polygon_file<Point>(file); }
 
 inline std::size_t number_of_vertices(const Rings& rings)
 {

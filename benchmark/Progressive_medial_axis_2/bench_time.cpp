@@ -80,21 +80,21 @@ template <class Traits>
 double run_pma(const Rings& rings, std::string& note, const std::string& nv_dump_file)
 {
   typedef CGAL::Progressive_medial_axis_2<Traits> PMA;
-  typename PMA::Rings r;
-  for(const auto& ring : rings) {
-    r.emplace_back();
-    for(const Point& p : ring) r.back().push_back(typename PMA::Point_2(p.x(), p.y()));
-  }
+  // records n_v of every step
+  struct Queue_recorder : CGAL::Default_progressive_medial_axis_visitor {
+    std::vector<std::uint32_t> queue_per_step;
+    void on_step(std::size_t, std::size_t n_v) { queue_per_step.push_back(std::uint32_t(n_v)); }
+  } recorder;
   double t0 = now();
-  PMA pma(r);
-  pma.refine_all();
-  // coordinates are computed on first use: read them all
+  PMA pma(rings);
+  pma.refine_all(recorder);
+  // the vertices are resolved when the axis is read: read them all
   double checksum = 0;
   for(const auto& v : pma.medial_axis().vertices()) checksum += CGAL::to_double(v.radius());
   double t = now() - t0;
   const auto& s = pma.statistics();
   std::map<std::uint32_t, std::size_t> hist;
-  for(std::uint32_t v : s.queue_per_step) ++hist[v];
+  for(std::uint32_t v : recorder.queue_per_step) ++hist[v];
   std::ostringstream o;
   if(!(checksum >= 0)) o << "bad radius;";
   o << "edges=" << pma.medial_axis().number_of_edges() << ";nv_max=" << s.max_queue << ";nv_hist=";
@@ -106,7 +106,7 @@ double run_pma(const Rings& rings, std::string& note, const std::string& nv_dump
   note = o.str();
   if(!nv_dump_file.empty()) {
     std::ofstream out(nv_dump_file);
-    for(std::size_t i = 0; i < s.queue_per_step.size(); ++i) out << (i + 1) << ' ' << s.queue_per_step[i] << '\n';
+    for(std::size_t i = 0; i < recorder.queue_per_step.size(); ++i) out << (i + 1) << ' ' << recorder.queue_per_step[i] << '\n';
     if(!out) throw std::runtime_error("cannot write " + nv_dump_file);
   }
   return t;
@@ -174,8 +174,8 @@ double run_method(const std::string& m, const Rings& rings, std::string& note, d
                   const std::string& nv_dump_file)
 {
   aux = -1;
-  if(m == "pma_filtered") return run_pma<CGAL::Progressive_medial_axis_filtered_traits_2<> >(rings, note, nv_dump_file);
-  if(m == "pma_epick") return run_pma<CGAL::Progressive_medial_axis_traits_2<CGAL::Epick> >(rings, note, "");
+  if(m == "pma_filtered") return run_pma<CGAL::Progressive_medial_axis_traits_2<CGAL::Epick> >(rings, note, nv_dump_file);
+  if(m == "pma_epick") return run_pma<CGAL::Progressive_medial_axis_traits_2<CGAL::Simple_cartesian<double> > >(rings, note, "");
   if(m == "pma_exact")
     return run_pma<CGAL::Progressive_medial_axis_traits_2<CGAL::Simple_cartesian<CORE::Expr> > >(rings, note, "");
   if(m == "sdg") return run_sdg<Sdg>(rings, note);

@@ -11,12 +11,12 @@
 // orders higher, 16 times the vertices, since one order multiplies them by 4).
 // Deterministic: for a grid shape, of the seeds 1..16 the one whose vertex count is
 // nearest to the target is taken (ties: the smaller seed). Prints one line per file:
-// name, vertices, holes. Coordinates are written by CGAL::PMA2::write_wkt_polygon with 17
+// name, vertices, holes. Coordinates are written by pma_tool::write_wkt_polygon with 17
 // significant digits: a coordinate rounded to 6 decimals, 0.1 say, reads
 // 0.10000000000000001, which is read back as the same double as "0.1".
 #include <pma_test/degenerate_shapes.h>
 
-#include <CGAL/Progressive_medial_axis_2/IO/polygon_io.h>
+#include <pma_tool/polygon_io.h>
 
 #include <cstdint>
 #include <cstdio>
@@ -34,7 +34,7 @@ bool write(const std::string& dir, const std::string& name, const std::vector<Ri
 {
   const std::string path = dir + "/" + name + ".wkt";
   std::ofstream out(path);
-  CGAL::PMA2::write_wkt_polygon(out, rings);
+  pma_tool::write_wkt_polygon(out, rings);
   out << "\n";
   out.close();
   if(!out) {

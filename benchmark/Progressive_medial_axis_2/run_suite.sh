@@ -19,8 +19,8 @@ else
 fi
 
 scripts/install_deps.sh
-cmake -S . -B build -DCMAKE_BUILD_TYPE=Release > build-configure.log
-cmake --build build -j2 --target bench_time bench_accuracy make_synthetic progressive_medial_axis
+cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DPMA_BUILD_BENCHMARKS=ON > build-configure.log
+cmake --build build -j2 --target bench_time bench_accuracy make_synthetic make_degenerate progressive_medial_axis
 
 if [ $quick = 1 ]; then python3 $here/fetch_data.py --quick; else python3 $here/fetch_data.py; fi
 # the shapes of the set that validated: columns name file kind vertices holes sets source status

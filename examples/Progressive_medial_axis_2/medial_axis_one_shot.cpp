@@ -19,14 +19,14 @@ int main()
   polygon.push_back(K::Point_2(1, 2));
   polygon.push_back(K::Point_2(0, 2));
 
-  auto axis = CGAL::medial_axis_2(polygon);   // exact decisions (filtered traits)
+  auto axis = CGAL::medial_axis_2(polygon);   // every decision exact
 
   typedef decltype(axis) Medial_axis;
   for(const auto& v : axis.vertices())
     if(v.kind() == Medial_axis::BRANCH_POINT)
       std::cout << "branch point " << v.point() << " radius " << v.radius() << "\n";
   for(const auto& e : axis.edges())
-    std::cout << (e.kind() == Medial_axis::LINE_SEGMENT ? "line     " : "parabola ")
+    std::cout << (e.curve_kind() == Medial_axis::LINE_SEGMENT ? "line     " : "parabola ")
               << e.first_generator().id() << " / " << e.second_generator().id()
               << "  length " << e.length() << "\n";
   return 0;

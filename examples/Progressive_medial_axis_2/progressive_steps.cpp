@@ -8,12 +8,14 @@
 #include <iostream>
 
 typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
-typedef CGAL::Progressive_medial_axis_filtered_traits_2<K> Traits;
+typedef CGAL::Progressive_medial_axis_traits_2<K> Traits;       // exact decisions
 typedef CGAL::Progressive_medial_axis_2<Traits> Progressive_medial_axis;
 
-// Counts the steps and remembers the largest priority queue of a merge.
-struct Step_watcher {
-  std::size_t steps = 0, largest_queue = 0;
+// Counts the steps and the events, and remembers the largest priority queue
+// of a merge (a model of ProgressiveMedialAxisVisitor_2).
+struct Step_watcher : CGAL::Default_progressive_medial_axis_visitor {
+  std::size_t steps = 0, vanishings = 0, largest_queue = 0;
+  void on_vanish() { ++vanishings; }
   void on_step(std::size_t /*step*/, std::size_t n_v)
   {
     ++steps;
@@ -26,7 +28,7 @@ int main()
   // a star-shaped polygon with 40 vertices
   CGAL::Polygon_2<K> star;
   for(int i = 0; i < 40; ++i) {
-    double a = 2 * M_PI * i / 40, r = (i % 2 == 0) ? 1.0 : 0.45;
+    double a = 2 * CGAL_PI * i / 40, r = (i % 2 == 0) ? 1.0 : 0.45;
     star.push_back(K::Point_2(r * std::cos(a), r * std::sin(a)));
   }
 
@@ -42,8 +44,8 @@ int main()
   // then all the others, watched
   Step_watcher watcher;
   pma.refine_all(watcher);
-  std::cout << "complete after " << watcher.steps << " more steps; largest queue n_v = "
-            << watcher.largest_queue << "; the axis has " << pma.medial_axis().number_of_edges()
-            << " curves\n";
+  std::cout << "complete after " << watcher.steps << " more steps (" << watcher.vanishings
+            << " vanishing points); largest queue n_v = " << watcher.largest_queue << "; the axis has "
+            << pma.medial_axis().number_of_edges() << " curves\n";
   return 0;
 }

@@ -1,8 +1,18 @@
 // Copyright (c) 2026 The Progressive_medial_axis_2 authors.
+// All rights reserved.
+//
+// This file is part of CGAL (www.cgal.org).
+//
+// $URL$
+// $Id$
 // SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+//
+// Author(s)     : The Progressive_medial_axis_2 authors
 
 #ifndef CGAL_PROGRESSIVE_MEDIAL_AXIS_TRAITS_2_H
 #define CGAL_PROGRESSIVE_MEDIAL_AXIS_TRAITS_2_H
+
+#include <CGAL/license/Progressive_medial_axis_2.h>
 
 #include <CGAL/Progressive_medial_axis_2/internal/Medial_constructions.h>
 #include <CGAL/Progressive_medial_axis_2/internal/Mpfr_interval.h>
@@ -10,10 +20,15 @@
 #include <CGAL/Progressive_medial_axis_2/internal/One_root_rational.h>
 #include <CGAL/Progressive_medial_axis_2/internal/Nested_root_number.h>
 
+#include <CGAL/Progressive_medial_axis_2/internal/Input_conversion.h>
+#include <CGAL/Progressive_medial_axis_2/internal/Medial_axis_engine.h>
+
+#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Simple_cartesian.h>
-#include <CGAL/CORE_Expr.h>
+#include <CGAL/Gmpq.h>
 #include <CGAL/Interval_nt.h>
+#include <CGAL/Lazy_exact_nt.h>
 #include <CGAL/enum.h>
 #include <CGAL/number_utils.h>
 
@@ -23,10 +38,13 @@
 #include <memory>
 #include <optional>
 #include <type_traits>
+#include <cstdint>
+
+#include <boost/multiprecision/number.hpp>
 
 namespace CGAL {
 
-namespace PMA2 {
+namespace Progressive_medial_axes {
 namespace internal {
 
 /// A generator of the medial axis as the traits see it: a point, or a
@@ -49,11 +67,23 @@ struct Site {
   }
 };
 
+/// The orientation predicate of kernel K, exact: for a kernel of doubles
+/// (Simple_cartesian<double>), that of Epick on the same points.
+template <class K>
+struct Exact_orientation {
+  typedef Exact_predicates_kernel_for<K> EK;
+  Orientation operator()(const typename K::Point_2& a, const typename K::Point_2& b,
+                         const typename K::Point_2& c) const
+  {
+    return typename EK::type().orientation_2_object()(EK::point(a), EK::point(b), EK::point(c));
+  }
+};
+
 /// Exact symbolic relations of a triple, from exact predicates of `K`.
 template <class K, class Site_>
-Triple_relations triple_relations(const Site_ s[3], const K& k = K())
+Triple_relations triple_relations(const Site_ s[3])
 {
-  typename K::Orientation_2 orientation = k.orientation_2_object();
+  Exact_orientation<K> orientation;
   Triple_relations rel;
   for(int i = 0; i < 3; ++i)
     for(int j = 0; j < 3; ++j) {
@@ -81,6 +111,33 @@ Site_nt<NT> site_nt(const Site_& s, const Convert& cv)
   r.bx = cv(s.q.x()); r.by = cv(s.q.y());
   r.axis_parallel = !s.is_point && (s.p.x() == s.q.x() || s.p.y() == s.q.y());
   return r;
+}
+
+/// Whether a circle computed in double is tangent to its three sites, up to
+/// a relative 1e-9 of the coordinates involved: a check against the wild
+/// results of ill-conditioned constructions, not a proof.
+template <class NT>
+bool plausible_circle(const Site_nt<NT> s[3], const Triple_relations& rel, const Circle_nt<NT>& c)
+{
+  using std::fabs;
+  NT scale = fabs(c.x) + fabs(c.y) + fabs(c.r);
+  for(int i = 0; i < 3; ++i)
+    scale = (std::max)(scale, (std::max)((std::max)(fabs(s[i].ax), fabs(s[i].ay)), (std::max)(fabs(s[i].bx), fabs(s[i].by))));
+  const NT tolerance = NT(1e-9) * scale;
+  if(!(c.r >= 0) || !std::isfinite(c.x) || !std::isfinite(c.y)) return false;
+  for(int i = 0; i < 3; ++i) {
+    NT d;
+    if(s[i].is_point) {
+      const NT dx = c.x - s[i].ax, dy = c.y - s[i].ay;
+      d = std::sqrt(dx * dx + dy * dy);
+    } else {
+      const NT dx = s[i].bx - s[i].ax, dy = s[i].by - s[i].ay;
+      d = fabs(dx * (c.y - s[i].ay) - dy * (c.x - s[i].ax)) / std::sqrt(dx * dx + dy * dy);
+    }
+    if(fabs(d - c.r) > tolerance) return false;
+  }
+  (void)rel;
+  return true;
 }
 
 /// TIME_FOOT: the foot on the separator of the point of site s[0].
@@ -126,6 +183,12 @@ bool evaluate_time(Time_kind kind, const Site_& c, const Site_* s, const Triple_
   Circle_nt<NT> circle;
   if(!medial_circle(sn, rel, circle))
     return false;
+  if constexpr(std::is_floating_point<NT>::value) {
+    // a circle built in floating point from nearly degenerate sites can be
+    // far off: the decisions made on it would not be the exact ones
+    if(!plausible_circle(sn, rel, circle))
+      throw Uncertain_decision();
+  }
   if(kind == TIME_SWITCH) {
     t = foot_position(px, py, qx, qy, circle);
     return true;
@@ -143,9 +206,37 @@ struct Identity_convert {
   template <class T> const T& operator()(const T& x) const { return x; }
 };
 
+/// The exact value of a coordinate of an exact kernel (Epeck), as a Gmpq.
+inline const Gmpq& exact_gmpq(const Gmpq& q) { return q; }
+#ifdef CGAL_USE_GMPXX
+inline Gmpq exact_gmpq(const ::mpq_class& q) { return Gmpq(q.get_mpq_t()); }
+#endif
+template <class ET>
+Gmpq exact_gmpq(const Lazy_exact_nt<ET>& x)
+{
+  return exact_gmpq(CGAL::exact(x));
+}
+template <class Backend, boost::multiprecision::expression_template_option ET>
+Gmpq exact_gmpq(const boost::multiprecision::number<Backend, ET>& q)
+{
+  return Gmpq(q.backend().data());
+}
+
+/// Converts a coordinate (a double, or an exact number of Epeck) to the
+/// number type NT of a stage of the filtered traits: exactly, except for
+/// the approximate stages (intervals enclose it, double-double rounds it).
 template <class NT>
 struct To_nt_convert {
-  template <class T> NT operator()(const T& x) const { return NT(x); }
+  NT operator()(double x) const { return NT(x); }
+  template <class T>
+  NT operator()(const T& x) const
+  {
+    if constexpr(std::is_same<NT, Interval_nt<false> >::value) return NT(CGAL::to_interval(x));
+    else if constexpr(std::is_same<NT, Double_double>::value) return NT(CGAL::to_double(x));
+    else if constexpr(std::is_same<NT, Small_one_root>::value) return NT(Small_rational(exact_gmpq(x)));
+    else if constexpr(std::is_same<NT, double>::value) return CGAL::to_double(x);
+    else return NT(exact_gmpq(x));
+  }
 };
 
 /// The function objects of the concept `ProgressiveMedialAxisTraits_2`,
@@ -167,9 +258,10 @@ public:
   typedef Site<Point_2> Site_2;
   /// The position of an event along the separator.
   typedef Event_time_2_ Event_time_2;
-  typedef typename Kernel::Orientation_2 Orientation_2;
+  /// The orientation of three points, exact (also for a kernel of doubles).
+  typedef Exact_orientation<Kernel> Orientation_2;
 
-  Orientation_2 orientation_2_object() const { return Kernel().orientation_2_object(); }
+  Orientation_2 orientation_2_object() const { return Orientation_2(); }
 
   /// The time 0 (the source of the separator) and the time of its target.
   struct Compute_start_time_2 {
@@ -246,6 +338,19 @@ public:
     }
   };
 
+  /// Whether the disks tangent to the sites `a0, a1, a2` and to `b0, b1,
+  /// b2` (each triple counter-clockwise around its centre) are the same
+  /// disk: two vertices of the medial axis at one point.
+  struct Equal_medial_disks_2 {
+    bool operator()(const Site_2& a0, const Site_2& a1, const Site_2& a2, const Site_2& b0, const Site_2& b1,
+                    const Site_2& b2) const
+    {
+      Site_2 s[3] = {a0, a1, a2}, t[3] = {b0, b1, b2};
+      return Model::same_disk(s, t);
+    }
+  };
+
+  Equal_medial_disks_2 equal_medial_disks_2_object() const { return Equal_medial_disks_2(); }
   Compute_start_time_2 compute_start_time_2_object() const { return Compute_start_time_2(); }
   Compute_end_time_2 compute_end_time_2_object() const { return Compute_end_time_2(); }
   Compute_switch_time_2 compute_switch_time_2_object() const { return Compute_switch_time_2(); }
@@ -256,34 +361,39 @@ public:
   Construct_medial_disk_2 construct_medial_disk_2_object() const { return Construct_medial_disk_2(); }
 };
 
-} // namespace internal
-} // namespace PMA2
 
-/*!
-\ingroup PkgProgressiveMedialAxis2Traits
+/// The model that computes every construction and decision in `K::FT`
+/// (see Progressive_medial_axis_traits_2).
+/// An event time of the double-precision model: its value, the squared
+/// length of its separator (the scale of its rounding errors) and an id
+/// shared by its copies (one event compared with itself is not a near tie).
+struct Double_time {
+  double t = 0, scale = 1;
+  std::uint64_t id = 0;
+  bool exact = false;   // the start of the separator: 0, exactly
+  static std::uint64_t next_id()
+  {
+    static thread_local std::uint64_t n = 0;
+    return ++n;
+  }
+};
 
-The traits model for a kernel `K` whose number type has a square root: every
-construction and every decision of the merge is computed in `K::FT`.
+/// Two times within this fraction of the squared length of the separator
+/// are a near tie, which the double-precision model does not decide.
+constexpr double near_tie = 1e-10;
 
-- With `Exact_predicates_inexact_constructions_kernel` (`FT` is `double`) the
-  decisions are made in floating point; predicates on input points are exact.
-  This is the fastest model and the one of the paper's implementation.
-- With `Exact_predicates_exact_constructions_kernel_with_sqrt`
-  (`Simple_cartesian<CORE::Expr>`) every decision and construction is made
-  by `CORE::Expr`, with its default (progressive) evaluation.  CGAL 5.5's
-  CORE has been seen to misjudge the sign of an expression that is exactly
-  zero in that mode; the filtered model, which never uses `CORE::Expr`, is
-  the more reliable exact choice.
+template <class FT>
+struct Number_time {
+  typedef typename std::conditional<std::is_floating_point<FT>::value, Double_time, FT>::type type;
+};
 
-\cgalModels `ProgressiveMedialAxisTraits_2`
-*/
+template <class CK> class Filtered_model;
+
 template <class K>
-class Progressive_medial_axis_traits_2
-  : public PMA2::internal::Traits_functors<Progressive_medial_axis_traits_2<K>, K, typename K::FT,
-                                           typename K::Point_2, typename K::FT>
+class Number_model
+  : public Traits_functors<Number_model<K>, K, typename K::FT, typename K::Point_2, typename Number_time<typename K::FT>::type>
 {
-  typedef PMA2::internal::Traits_functors<Progressive_medial_axis_traits_2<K>, K, typename K::FT,
-                                          typename K::Point_2, typename K::FT> Base;
+  typedef Traits_functors<Number_model<K>, K, typename K::FT, typename K::Point_2, typename Number_time<typename K::FT>::type> Base;
   friend Base;
 
 public:
@@ -296,49 +406,78 @@ public:
   static constexpr bool Has_exact_decisions = !std::is_floating_point<FT>::value;
 
 private:
-  static bool time(PMA2::internal::Time_kind kind, const Site_2& line, const Site_2* s, Event_time_2& t)
+  static constexpr bool Floating = std::is_floating_point<FT>::value;
+
+  static bool time(Progressive_medial_axes::internal::Time_kind kind, const Site_2& line, const Site_2* s, Event_time_2& t)
   {
-    PMA2::internal::Triple_relations rel;
-    if(s != nullptr) rel = PMA2::internal::triple_relations<K>(s);
-    return PMA2::internal::evaluate_time<FT>(kind, line, s, rel, PMA2::internal::Identity_convert(), t);
+    Progressive_medial_axes::internal::Triple_relations rel;
+    if(s != nullptr) rel = Progressive_medial_axes::internal::triple_relations<K>(s);
+    if constexpr(Floating) {
+      t.id = Double_time::next_id();
+      t.exact = kind == Progressive_medial_axes::internal::TIME_ZERO;
+      const FT dx = line.q.x() - line.p.x(), dy = line.q.y() - line.p.y();
+      t.scale = dx * dx + dy * dy;
+      return Progressive_medial_axes::internal::evaluate_time<FT>(kind, line, s, rel, Progressive_medial_axes::internal::Identity_convert(), t.t);
+    } else {
+      return Progressive_medial_axes::internal::evaluate_time<FT>(kind, line, s, rel, Progressive_medial_axes::internal::Identity_convert(), t);
+    }
   }
 
   static Event_time_2 foot_time(const Site_2& line, const Point_2& p)
   {
-    return (line.q.x() - line.p.x()) * (p.x() - line.p.x()) + (line.q.y() - line.p.y()) * (p.y() - line.p.y());
+    Event_time_2 t;
+    const Site_2 s[3] = {Site_2::point(p), Site_2::point(p), Site_2::point(p)};
+    time(Progressive_medial_axes::internal::TIME_FOOT, line, s, t);
+    return t;
   }
 
-  static Comparison_result compare_times(const Event_time_2& a, const Event_time_2& b) { return CGAL::compare(a, b); }
-
-  // With floating-point decisions, times within a few ulps of `now` count as now.
-  static bool in_past(const Event_time_2& t, const Event_time_2& now, const Site_2& line)
+  // In double precision a near tie is not decided (Uncertain_decision): the
+  // merge is redone with exact decisions.
+  static Comparison_result compare_times(const Event_time_2& a, const Event_time_2& b)
   {
-    if constexpr(Has_exact_decisions) {
-      return CGAL::compare(t, now) == SMALLER;
+    if constexpr(Floating) {
+      if(a.id == b.id || (a.exact && b.exact)) return EQUAL;
+      if(std::fabs(a.t - b.t) <= near_tie * (std::max)(a.scale, b.scale)) throw Uncertain_decision();
+      return a.t < b.t ? SMALLER : LARGER;
     } else {
-      FT scale;
-      time(PMA2::internal::TIME_END, line, nullptr, scale);
-      return t < now - FT(1e-12) * scale;
+      return CGAL::compare(a, b);
     }
+  }
+
+  static bool in_past(const Event_time_2& t, const Event_time_2& now, const Site_2&)
+  {
+    return compare_times(t, now) == SMALLER;
   }
 
   static bool disk(const Site_2* s, Point_2& centre, FT& radius)
   {
-    PMA2::internal::Triple_relations rel = PMA2::internal::triple_relations<K>(s);
-    PMA2::internal::Identity_convert cv;
-    PMA2::internal::Site_nt<FT> sn[3] = {PMA2::internal::site_nt<FT>(s[0], cv), PMA2::internal::site_nt<FT>(s[1], cv),
-                                         PMA2::internal::site_nt<FT>(s[2], cv)};
-    PMA2::internal::Circle_nt<FT> circle;
-    if(!PMA2::internal::medial_circle(sn, rel, circle))
-      return false;
+    Progressive_medial_axes::internal::Triple_relations rel = Progressive_medial_axes::internal::triple_relations<K>(s);
+    Progressive_medial_axes::internal::Identity_convert cv;
+    Progressive_medial_axes::internal::Site_nt<FT> sn[3] = {Progressive_medial_axes::internal::site_nt<FT>(s[0], cv), Progressive_medial_axes::internal::site_nt<FT>(s[1], cv),
+                                         Progressive_medial_axes::internal::site_nt<FT>(s[2], cv)};
+    Progressive_medial_axes::internal::Circle_nt<FT> circle;
+    if constexpr(Floating) {
+      // a vertex whose double construction is implausible is built by the
+      // exact-decision model (double-double once its branches are decided)
+      if(!Progressive_medial_axes::internal::medial_circle(sn, rel, circle) ||
+         !Progressive_medial_axes::internal::plausible_circle(sn, rel, circle))
+        return Filtered_model<K>::disk(s, centre, radius);
+    } else {
+      if(!Progressive_medial_axes::internal::medial_circle(sn, rel, circle))
+        return false;
+    }
     centre = Point_2(circle.x, circle.y);
     radius = circle.r;
     return true;
   }
-};
 
-namespace PMA2 {
-namespace internal {
+  static bool same_disk(const Site_2* s, const Site_2* t)
+  {
+    Point_2 a, b;
+    FT ra, rb;
+    return disk(s, a, ra) && disk(t, b, rb) && a == b && ra == rb;
+  }
+};
 
 /// An event time of the filtered traits: an interval that encloses it, and
 /// what is needed to evaluate it again more precisely on demand.
@@ -462,48 +601,17 @@ public:
   mutable std::shared_ptr<char> tie_;       // shared by times found exactly equal
 };
 
-} // namespace internal
-} // namespace PMA2
 
-/*!
-\ingroup PkgProgressiveMedialAxis2Traits
-
-The filtered traits model: every decision is exact, and almost all are
-taken in floating point.  A decision is evaluated first in double interval
-arithmetic (`Interval_nt`).  What the intervals cannot decide is almost
-always an exact tie (equal event times, a zero discriminant), and is decided
-- in exact numbers alpha + sqrt(rho), where alpha and rho are a + b sqrt(D)
-  with rational a, b, D, when the computation keeps that form, as is usual
-  with axis-parallel edges (mazes, CAD parts);
-- otherwise in MPFR interval arithmetic at 256 bits, which decides the
-  near-ties that are not ties;
-- and what is left, in nested-root numbers: polynomials with rational coefficients
-  in the square roots that the computation takes (segment lengths,
-  discriminants, chords), each root possibly of a number holding others,
-  whose sign is found by exact squaring.  This stage always decides: the
-  model never needs `CORE::Expr` and has no global state.
-
-Constructed vertices: the double intervals decide the branches of the
-construction (which of two tangent circles, ...); the disk is then computed
-in double-double arithmetic (about 106 bits) and rounded to double, which
-gives the exact disk correctly rounded in all but ill-conditioned cases.
-When the intervals cannot decide a branch, MPFR intervals are used until
-both ends round to the same double (the exact point correctly rounded), or
-else the exact value is rounded to double.  Points are those of `CK`
-(double coordinates).
-
-\cgalModels `ProgressiveMedialAxisTraits_2`
-*/
-template <class CK = Exact_predicates_inexact_constructions_kernel>
-class Progressive_medial_axis_filtered_traits_2
-  : public PMA2::internal::Traits_functors<
-      Progressive_medial_axis_filtered_traits_2<CK>, CK, typename CK::FT, typename CK::Point_2,
-      PMA2::internal::Filtered_event_time<PMA2::internal::Site<typename CK::Point_2> > >
+/// The model with exact decisions (see Progressive_medial_axis_traits_2).
+template <class CK>
+class Filtered_model
+  : public Traits_functors<Filtered_model<CK>, CK, typename CK::FT, typename CK::Point_2,
+                           Filtered_event_time<Site<typename CK::Point_2> > >
 {
-  typedef PMA2::internal::Traits_functors<
-    Progressive_medial_axis_filtered_traits_2<CK>, CK, typename CK::FT, typename CK::Point_2,
-    PMA2::internal::Filtered_event_time<PMA2::internal::Site<typename CK::Point_2> > > Base;
+  typedef Traits_functors<Filtered_model<CK>, CK, typename CK::FT, typename CK::Point_2,
+                          Filtered_event_time<Site<typename CK::Point_2> > > Base;
   friend Base;
+  template <class> friend class Number_model;   // the double model builds its implausible vertices here
 
 public:
   typedef typename Base::FT FT;
@@ -511,8 +619,8 @@ public:
   typedef typename Base::Site_2 Site_2;
   typedef typename Base::Event_time_2 Event_time_2;
   typedef Interval_nt<false> Interval;
-  typedef PMA2::internal::Mpfr_interval Mpfr;
-  typedef PMA2::internal::Nested_root_number Nested;
+  typedef Progressive_medial_axes::internal::Mpfr_interval Mpfr;
+  typedef Progressive_medial_axes::internal::Nested_root_number Nested;
 
   static constexpr bool Has_exact_decisions = true;
 
@@ -540,13 +648,13 @@ public:
 
 private:
   // Evaluates a time: double intervals, MPFR intervals, exactly.
-  static bool time(PMA2::internal::Time_kind kind, const Site_2& line, const Site_2* s, Event_time_2& t)
+  static bool time(Progressive_medial_axes::internal::Time_kind kind, const Site_2& line, const Site_2* s, Event_time_2& t)
   {
     t.kind_ = kind;
     t.c_ = line;
     if(s != nullptr) {
       for(int i = 0; i < 3; ++i) t.s_[i] = s[i];
-      t.rel_ = PMA2::internal::triple_relations<CK>(s);
+      t.rel_ = Progressive_medial_axes::internal::triple_relations<CK>(s);
     }
     t.one_root_.reset();
     t.one_root_state_ = 0;
@@ -558,8 +666,8 @@ private:
       Protect_FPU_rounding<true> protection;
       try {
         Interval v;
-        PMA2::internal::To_nt_convert<Interval> cv;
-        bool ok = PMA2::internal::evaluate_time<Interval>(kind, line, t.s_, t.rel_, cv, v);
+        Progressive_medial_axes::internal::To_nt_convert<Interval> cv;
+        bool ok = Progressive_medial_axes::internal::evaluate_time<Interval>(kind, line, t.s_, t.rel_, cv, v);
         if(!ok)
           return false;
         if(CGAL_NTS is_finite(v.inf()) && CGAL_NTS is_finite(v.sup())) {
@@ -594,7 +702,7 @@ private:
     if(decided)
       return *decided;
     ++filter_statistics().exact_evaluations;
-    PMA2::internal::Nested_root_context context;
+    Progressive_medial_axes::internal::Nested_root_context context;
     Nested v;
     if(!t.nested(v))
       return false;
@@ -607,7 +715,7 @@ private:
   {
     Event_time_2 t;
     const Site_2 s[3] = {Site_2::point(p), Site_2::point(p), Site_2::point(p)};
-    time(PMA2::internal::TIME_FOOT, line, s, t);
+    time(Progressive_medial_axes::internal::TIME_FOOT, line, s, t);
     return t;
   }
 
@@ -617,7 +725,7 @@ private:
     if(is_certain(r))
       return get_certain(r);
     // the two ends of one separator
-    if(a.kind_ == b.kind_ && a.kind_ <= PMA2::internal::TIME_END && a.c_ == b.c_)
+    if(a.kind_ == b.kind_ && a.kind_ <= Progressive_medial_axes::internal::TIME_END && a.c_ == b.c_)
       return EQUAL;
     // already found equal
     if(a.tie_ && a.tie_ == b.tie_)
@@ -643,7 +751,7 @@ private:
         if(ra->small && rb->small) {
           try {
             sign = sign_of_difference(ra->small_value, rb->small_value);
-          } catch(PMA2::internal::Small_rational_overflow&) {
+          } catch(Progressive_medial_axes::internal::Small_rational_overflow&) {
           }
         }
         if(!sign)
@@ -655,7 +763,7 @@ private:
     if(decided)
       return *decided;
     ++filter_statistics().exact_comparisons;
-    PMA2::internal::Nested_root_context context;
+    Progressive_medial_axes::internal::Nested_root_context context;
     Nested ta, tb;
     const bool ok = a.nested(ta) && b.nested(tb);
     CGAL_assertion(ok);
@@ -683,13 +791,13 @@ private:
   // The disk tangent to three sites, rounded to double.
   static bool disk(const Site_2* s, Point_2& centre, FT& radius)
   {
-    PMA2::internal::Triple_relations rel = PMA2::internal::triple_relations<CK>(s);
+    Progressive_medial_axes::internal::Triple_relations rel = Progressive_medial_axes::internal::triple_relations<CK>(s);
     ++filter_statistics().interval_evaluations;
     bool branches_decided = false;
     {
       Protect_FPU_rounding<true> protection;
       try {
-        PMA2::internal::Circle_nt<Interval> circle;
+        Progressive_medial_axes::internal::Circle_nt<Interval> circle;
         if(!disk_nt<Interval>(s, rel, circle))
           return false;
         branches_decided = true;
@@ -706,8 +814,8 @@ private:
       // double-double arithmetic (about 106 bits), rounded to double, gives
       // the exact disk correctly rounded in all but ill-conditioned cases.
       ++filter_statistics().double_double_evaluations;
-      PMA2::internal::Circle_nt<PMA2::internal::Double_double> circle;
-      if(disk_nt<PMA2::internal::Double_double>(s, rel, circle)) {
+      Progressive_medial_axes::internal::Circle_nt<Progressive_medial_axes::internal::Double_double> circle;
+      if(disk_nt<Progressive_medial_axes::internal::Double_double>(s, rel, circle)) {
         centre = Point_2(circle.x.to_double(), circle.y.to_double());
         radius = circle.r.to_double();
         return true;
@@ -716,7 +824,7 @@ private:
     ++filter_statistics().mpfr_evaluations;
     const std::optional<bool> decided = before_exact<bool>(
       [&]() -> std::optional<bool> {
-        PMA2::internal::Circle_nt<Mpfr> circle;
+        Progressive_medial_axes::internal::Circle_nt<Mpfr> circle;
         if(!disk_nt<Mpfr>(s, rel, circle))
           return false;
         if(!circle.x.rounds_to_one_double() || !circle.y.rounds_to_one_double() || !circle.r.rounds_to_one_double())
@@ -728,7 +836,7 @@ private:
       [&]() -> std::optional<bool> {
         auto one_root = [&](auto number) {
           typedef decltype(number) N;
-          PMA2::internal::Circle_nt<N> circle;
+          Progressive_medial_axes::internal::Circle_nt<N> circle;
           if(!disk_nt<N>(s, rel, circle))
             return false;
           ++filter_statistics().rational_evaluations;
@@ -737,21 +845,57 @@ private:
           return true;
         };
         try {
-          return one_root(PMA2::internal::Small_one_root());
-        } catch(PMA2::internal::Small_rational_overflow&) {
-          return one_root(PMA2::internal::One_root_rational());
+          return one_root(Progressive_medial_axes::internal::Small_one_root());
+        } catch(Progressive_medial_axes::internal::Small_rational_overflow&) {
+          return one_root(Progressive_medial_axes::internal::One_root_rational());
         }
       });
     if(decided)
       return *decided;
     ++filter_statistics().exact_evaluations;
-    PMA2::internal::Nested_root_context context;
-    PMA2::internal::Circle_nt<Nested> circle;
+    Progressive_medial_axes::internal::Nested_root_context context;
+    Progressive_medial_axes::internal::Circle_nt<Nested> circle;
     if(!disk_nt<Nested>(s, rel, circle))
       return false;
     centre = Point_2(circle.x.to_double(), circle.y.to_double());
     radius = circle.r.to_double();
     return true;
+  }
+
+  // Whether two triples define the same disk: double intervals, then exact
+  // one-root numbers (small, then Gmpq), then nested-root numbers.
+  static bool same_disk(const Site_2* s, const Site_2* t)
+  {
+    const Progressive_medial_axes::internal::Triple_relations rs = Progressive_medial_axes::internal::triple_relations<CK>(s);
+    const Progressive_medial_axes::internal::Triple_relations rt = Progressive_medial_axes::internal::triple_relations<CK>(t);
+    {
+      Protect_FPU_rounding<true> protection;
+      try {
+        Progressive_medial_axes::internal::Circle_nt<Interval> a, b;
+        if(!disk_nt<Interval>(s, rs, a) || !disk_nt<Interval>(t, rt, b))
+          return false;
+        if(certainly(a.x != b.x) || certainly(a.y != b.y) || certainly(a.r != b.r))
+          return false;
+      } catch(Uncertain_conversion_exception&) {
+      }
+    }
+    auto equal = [&](auto number) {
+      typedef decltype(number) N;
+      Progressive_medial_axes::internal::Circle_nt<N> a, b;
+      if(!disk_nt<N>(s, rs, a) || !disk_nt<N>(t, rt, b))
+        return false;
+      return a.x == b.x && a.y == b.y && a.r == b.r;
+    };
+    try {
+      try {
+        return equal(Progressive_medial_axes::internal::Small_one_root());
+      } catch(Progressive_medial_axes::internal::Small_rational_overflow&) {
+        return equal(Progressive_medial_axes::internal::One_root_rational());
+      }
+    } catch(Progressive_medial_axes::internal::Not_one_root&) {
+    }
+    Progressive_medial_axes::internal::Nested_root_context context;
+    return equal(Nested());
   }
 
   // The stages between the double intervals and the nested-root numbers, in
@@ -769,9 +913,9 @@ private:
     try {
       if(std::optional<R> r = one_root_stage())
         return r;
-    } catch(PMA2::internal::Not_one_root&) {
+    } catch(Progressive_medial_axes::internal::Not_one_root&) {
     }
-    PMA2::internal::Mpfr_precision_scope scope(mpfr_precision);
+    Progressive_medial_axes::internal::Mpfr_precision_scope scope(mpfr_precision);
     try {
       return mpfr_stage();
     } catch(Uncertain_conversion_exception&) {
@@ -780,14 +924,98 @@ private:
   }
 
   template <class NT>
-  static bool disk_nt(const Site_2* s, const PMA2::internal::Triple_relations& rel, PMA2::internal::Circle_nt<NT>& circle)
+  static bool disk_nt(const Site_2* s, const Progressive_medial_axes::internal::Triple_relations& rel, Progressive_medial_axes::internal::Circle_nt<NT>& circle)
   {
-    PMA2::internal::To_nt_convert<NT> cv;
-    PMA2::internal::Site_nt<NT> sn[3] = {PMA2::internal::site_nt<NT>(s[0], cv), PMA2::internal::site_nt<NT>(s[1], cv),
-                                         PMA2::internal::site_nt<NT>(s[2], cv)};
-    return PMA2::internal::medial_circle(sn, rel, circle);
+    Progressive_medial_axes::internal::To_nt_convert<NT> cv;
+    Progressive_medial_axes::internal::Site_nt<NT> sn[3] = {Progressive_medial_axes::internal::site_nt<NT>(s[0], cv), Progressive_medial_axes::internal::site_nt<NT>(s[1], cv),
+                                         Progressive_medial_axes::internal::site_nt<NT>(s[2], cv)};
+    return Progressive_medial_axes::internal::medial_circle(sn, rel, circle);
   }
 };
+
+/// Kernels for which the traits take every decision exactly, filtered:
+/// Epick (double coordinates) and Epeck (exact rational coordinates).
+template <class K>
+struct Is_filtering_kernel
+  : std::integral_constant<bool, std::is_same<K, Exact_predicates_inexact_constructions_kernel>::value ||
+                                     std::is_same<K, Exact_predicates_exact_constructions_kernel>::value> {};
+
+} // namespace internal
+} // namespace Progressive_medial_axes
+
+/*!
+\ingroup PkgProgressiveMedialAxis2Traits
+
+The traits of `Progressive_medial_axis_2` for a kernel `K`, chosen as
+\cgal chooses for `Straight_skeleton_builder_traits_2`: a filtering kernel
+gets exact decisions, any other kernel its own arithmetic.
+
+<b>Exact decisions</b> (`K` is `Exact_predicates_inexact_constructions_kernel`
+or `Exact_predicates_exact_constructions_kernel`):
+every decision is exact, and almost all are
+taken in floating point.  A decision is evaluated first in double interval
+arithmetic (`Interval_nt`).  What the intervals cannot decide is almost
+always an exact tie (equal event times, a zero discriminant), and is decided
+- in exact numbers alpha + sqrt(rho), where alpha and rho are a + b sqrt(D)
+  with rational a, b, D, when the computation keeps that form, as is usual
+  with axis-parallel edges (mazes, CAD parts);
+- otherwise in MPFR interval arithmetic at 256 bits, which decides the
+  near-ties that are not ties;
+- and what is left, in nested-root numbers: polynomials with rational coefficients
+  in the square roots that the computation takes (segment lengths,
+  discriminants, chords), each root possibly of a number holding others,
+  whose sign is found by exact squaring.  This stage always decides: the
+  model never needs `CORE::Expr` and has no global state.
+
+Constructed vertices: the double intervals decide the branches of the
+construction (which of two tangent circles, ...); the disk is then computed
+in double-double arithmetic (about 106 bits) and rounded to double, which
+gives the exact disk correctly rounded in all but ill-conditioned cases.
+When the intervals cannot decide a branch, MPFR intervals are used until
+both ends round to the same double (the exact point correctly rounded), or
+else the exact value is rounded to double.  Points are those of `CK`
+(double coordinates).
+
+With `Epeck` the decisions use the exact rational coordinates of the
+input; vertices are rounded to double as with `Epick`.
+
+<b>The arithmetic of `K`</b>, for a kernel whose number type has a square
+root:
+
+- With `Simple_cartesian<double>`, everything is computed in `double`: the
+  fastest model, that of the paper's implementation.  Predicates on input
+  points stay exact (those of Epick), and the topology is always valid, but
+  a decision on nearly degenerate input may differ from the exact one; see
+  the user manual for what this model promises.
+- With `Simple_cartesian<CORE::Expr>` every decision and construction is
+  made by `CORE::Expr`, with its default (progressive) evaluation: exact and
+  slow (two orders of magnitude), a reference.  CGAL 5.5's CORE has been
+  seen to misjudge the sign of an expression that is exactly zero in that
+  mode; the exact-decision model, which never uses `CORE::Expr`, is the more
+  reliable exact choice.
+
+\cgalModels `ProgressiveMedialAxisTraits_2`
+*/
+template <class K>
+class Progressive_medial_axis_traits_2
+  : public std::conditional<Progressive_medial_axes::internal::Is_filtering_kernel<K>::value,
+                            Progressive_medial_axes::internal::Filtered_model<K>,
+                            Progressive_medial_axes::internal::Number_model<K> >::type
+{
+};
+
+namespace Progressive_medial_axes {
+namespace internal {
+
+// The double model redoes with exact decisions a merge that meets an anomaly.
+template <class K>
+struct Exact_fallback<Progressive_medial_axis_traits_2<K> > {
+  typedef typename std::conditional<!Is_filtering_kernel<K>::value && std::is_floating_point<typename K::FT>::value,
+                                    Filtered_model<K>, void>::type type;
+};
+
+} // namespace internal
+} // namespace Progressive_medial_axes
 
 } // namespace CGAL
 

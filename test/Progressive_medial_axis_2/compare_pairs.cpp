@@ -7,7 +7,7 @@
 #include <pma_test/compare_curves.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/Progressive_medial_axis_2/IO/polygon_io.h>
+#include <pma_tool/polygon_io.h>
 
 #include <algorithm>
 #include <cmath>
@@ -22,7 +22,7 @@ int main(int argc, char** argv)
   }
   double x0 = 1e300, y0 = 1e300, x1 = -1e300, y1 = -1e300;
   try {
-    for(const auto& ring : CGAL::PMA2::read_polygon_file<CGAL::Epick::Point_2>(argv[1]))
+    for(const auto& ring : pma_tool::read_polygon_file<CGAL::Epick::Point_2>(argv[1]))
       for(const auto& p : ring) {
         x0 = std::min(x0, p.x()); x1 = std::max(x1, p.x());
         y0 = std::min(y0, p.y()); y1 = std::max(y1, p.y());

@@ -24,3 +24,8 @@ pma_add_test_program(compare_pairs)
 # The exact one-root numbers that decide ties in the filtered traits.
 pma_add_test_program(test_number_types)
 add_test(NAME number_types COMMAND test_number_types)
+
+# The public C++ interface, as a user meets it (every overload and accessor,
+# the kernels, navigation, the fixed bugs), with the tool for --shape-out.
+pma_add_test_program(test_api)
+add_test(NAME api COMMAND test_api $<TARGET_FILE:progressive_medial_axis> ${PMA_TEST_DATA})

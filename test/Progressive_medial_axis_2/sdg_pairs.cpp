@@ -1,7 +1,7 @@
 // sdg_pairs [--branches] [--time] INPUT
 //
 // Prints the medial axis of the polygon in INPUT (a WKT POLYGON, or GeoJSON; see
-// CGAL::PMA2::read_polygon_file) as computed by the test oracle (CGAL's segment Voronoi
+// pma_tool::read_polygon_file) as computed by the test oracle (CGAL's segment Voronoi
 // diagram, pma_test/sdg_oracle.h), in the canonical ids of algorithm.md section 7:
 //
 //   pair A B L              one line per medial curve, A < B, L its length
@@ -16,7 +16,7 @@
 #include <pma_test/sdg_oracle.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/Progressive_medial_axis_2/IO/polygon_io.h>
+#include <pma_tool/polygon_io.h>
 #include <CGAL/Progressive_medial_axis_2/validate_polygon.h>
 
 #include <algorithm>
@@ -59,8 +59,8 @@ int main(int argc, char** argv)
   const Clock::time_point t0 = Clock::now();
   std::vector<std::vector<Point_2> > rings;
   try {
-    rings = CGAL::PMA2::read_polygon_file<Point_2>(path);
-    CGAL::PMA2::validate_polygon_rings<K>(rings);
+    rings = pma_tool::read_polygon_file<Point_2>(path);
+    CGAL::Progressive_medial_axes::validate_polygon_rings<K>(rings);
   } catch(const std::exception& e) {
     std::fprintf(stderr, "sdg_pairs: %s: %s\n", path.c_str(), e.what());
     return 2;

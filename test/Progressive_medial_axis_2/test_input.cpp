@@ -8,8 +8,10 @@
 #include <CGAL/intersections.h>
 
 #include <CGAL/Progressive_medial_axis_2/Input_error.h>
-#include <CGAL/Progressive_medial_axis_2/IO/polygon_io.h>
+#include <pma_tool/polygon_io.h>
 #include <CGAL/Progressive_medial_axis_2/validate_polygon.h>
+
+#include <pma_test/check.h>
 
 #include <chrono>
 #include <clocale>
@@ -32,18 +34,9 @@
 
 typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
 typedef K::Point_2 Point;
-typedef CGAL::PMA2::Rings<Point> Rings;
-using CGAL::PMA2::Input_error;
+typedef CGAL::Progressive_medial_axes::Rings<Point> Rings;
+using CGAL::Progressive_medial_axes::Input_error;
 
-// A check that is never compiled out: prints where it failed and makes the enclosing
-// test function return 1.
-#define CHECK(cond)                                                                    \
-  do {                                                                                 \
-    if(!(cond)) {                                                                      \
-      std::fprintf(stderr, "%s:%d: CHECK failed: %s\n", __FILE__, __LINE__, #cond);    \
-      return 1;                                                                        \
-    }                                                                                  \
-  } while(0)
 
 const int ANY = -2; // ring or vertex not checked
 
@@ -77,39 +70,38 @@ bool throws_input_error(const std::function<void()>& f, const std::string& subst
   return false;
 }
 
-#define CHECK_INPUT_ERROR(statement, substring, ring, vertex)                          \
-  do {                                                                                 \
-    std::string diagnostic_;                                                           \
-    if(!throws_input_error([&]() { statement; }, substring, ring, vertex, diagnostic_)) { \
-      std::fprintf(stderr, "%s:%d: CHECK_INPUT_ERROR failed: %s\n  %s\n", __FILE__,    \
-                   __LINE__, #statement, diagnostic_.c_str());                         \
-      return 1;                                                                        \
-    }                                                                                  \
+// The statement throws an Input_error as throws_input_error() wants.
+#define CHECK_INPUT_ERROR(statement, substring, ring, vertex)                                           \
+  do {                                                                                                  \
+    std::string diagnostic_;                                                                            \
+    const bool thrown_ = throws_input_error([&]() { statement; }, substring, ring, vertex, diagnostic_); \
+    REQUIRE(thrown_, #statement << ": " << diagnostic_);                                                \
   } while(0)
 
-#define CHECK_VALID(rings)                                                             \
-  do {                                                                                 \
-    try {                                                                              \
-      CGAL::PMA2::validate_polygon_rings<K>(rings);                                    \
-    } catch(const std::exception& e_) {                                                \
-      std::fprintf(stderr, "%s:%d: %s should be valid: %s\n", __FILE__, __LINE__,      \
-                   #rings, e_.what());                                                 \
-      return 1;                                                                        \
-    }                                                                                  \
+// The rings are a valid polygon.
+#define CHECK_VALID(rings)                                                                \
+  do {                                                                                    \
+    std::string error_;                                                                   \
+    try {                                                                                 \
+      CGAL::Progressive_medial_axes::validate_polygon_rings<K>(rings);                    \
+    } catch(const std::exception& e_) {                                                   \
+      error_ = e_.what();                                                                 \
+    }                                                                                     \
+    REQUIRE(error_.empty(), #rings << " should be valid: " << error_);                   \
   } while(0)
 
-void validate(const Rings& rings) { CGAL::PMA2::validate_polygon_rings<K>(rings); }
+void validate(const Rings& rings) { CGAL::Progressive_medial_axes::validate_polygon_rings<K>(rings); }
 
 Rings read_wkt(const std::string& text)
 {
   std::istringstream in(text);
-  return CGAL::PMA2::read_wkt_polygon<Point>(in);
+  return pma_tool::read_wkt_polygon<Point>(in);
 }
 
 Rings read_geojson(const std::string& text)
 {
   std::istringstream in(text);
-  return CGAL::PMA2::read_geojson_polygon<Point>(in);
+  return pma_tool::read_geojson_polygon<Point>(in);
 }
 
 std::string data(const std::string& name) { return std::string(PMA_TEST_DATA) + "/" + name; }
@@ -148,33 +140,33 @@ std::vector<Point> square(double x0, double y0, double x1, double y1, bool ccw =
 int test_wkt_reading()
 {
   Rings r = read_wkt("POLYGON ((0 0, 1 0, 1 1, 0 1, 0 0))");
-  CHECK(r.size() == 1 && r[0].size() == 4);
-  CHECK(r[0][1] == Point(1, 0) && r[0][3] == Point(0, 1));
+  REQUIRE(r.size() == 1 && r[0].size() == 4);
+  REQUIRE(r[0][1] == Point(1, 0) && r[0][3] == Point(0, 1));
 
   // Keyword case, white space, newlines, number syntax as strtod, order kept.
   r = read_wkt("\n  polygon\t(\n( 0 0 ,\r\n+1.5E+00 0,1e0 1 , .5 5. ,0 0 ) ,\n (0.25 0.25,0.5 0.25,0.5 0.5,0.25 0.25))  \n");
-  CHECK(r.size() == 2 && r[0].size() == 4 && r[1].size() == 3);
-  CHECK(r[0][1] == Point(1.5, 0) && r[0][2] == Point(1, 1) && r[0][3] == Point(0.5, 5));
-  CHECK(r[1][0] == Point(0.25, 0.25) && r[1][2] == Point(0.5, 0.5));
+  REQUIRE(r.size() == 2 && r[0].size() == 4 && r[1].size() == 3);
+  REQUIRE(r[0][1] == Point(1.5, 0) && r[0][2] == Point(1, 1) && r[0][3] == Point(0.5, 5));
+  REQUIRE(r[1][0] == Point(0.25, 0.25) && r[1][2] == Point(0.5, 0.5));
   r = read_wkt("PoLyGoN((0 0,1 0,1 1,0 0))");
-  CHECK(r.size() == 1 && r[0].size() == 3);
+  REQUIRE(r.size() == 1 && r[0].size() == 3);
 
   // Clockwise rings are kept as written.
   r = read_wkt("POLYGON ((0 0, 0 1, 1 1, 1 0, 0 0))");
-  CHECK(r[0][1] == Point(0, 1) && r[0][3] == Point(1, 0));
+  REQUIRE(r[0][1] == Point(0, 1) && r[0][3] == Point(1, 0));
 
   // A MULTIPOLYGON holding one polygon; a UTF-8 byte order mark.
   r = read_wkt("MULTIPOLYGON (((0 0, 4 0, 4 4, 0 0), (1 0.5, 3 0.5, 3 2, 1 0.5)))");
-  CHECK(r.size() == 2 && r[1].size() == 3);
+  REQUIRE(r.size() == 2 && r[1].size() == 3);
   r = read_wkt("\xEF\xBB\xBFPOLYGON ((0 0, 1 0, 1 1, 0 0))");
-  CHECK(r.size() == 1);
+  REQUIRE(r.size() == 1);
 
   // Numbers convert exactly as strtod (in the C locale).
   r = read_wkt("POLYGON ((0.1 -0, 2.2250738585072014e-308 4.9406564584124654e-324, 1e-400 -1e-400, 0.1 -0))");
-  CHECK(same_double(r[0][0].x(), 0.1) && same_double(r[0][0].y(), -0.0));
-  CHECK(same_double(r[0][1].x(), 2.2250738585072014e-308));
-  CHECK(same_double(r[0][1].y(), std::numeric_limits<double>::denorm_min()));
-  CHECK(same_double(r[0][2].x(), 0.0) && same_double(r[0][2].y(), -0.0));
+  REQUIRE(same_double(r[0][0].x(), 0.1) && same_double(r[0][0].y(), -0.0));
+  REQUIRE(same_double(r[0][1].x(), 2.2250738585072014e-308));
+  REQUIRE(same_double(r[0][1].y(), std::numeric_limits<double>::denorm_min()));
+  REQUIRE(same_double(r[0][2].x(), 0.0) && same_double(r[0][2].y(), -0.0));
   {
     std::mt19937_64 rng(12345);
     for(int i = 0; i < 20000; ++i) {
@@ -196,7 +188,7 @@ int test_wkt_reading()
       if(!same_double(q[0][0].x(), expected)) {
         std::fprintf(stderr, "number %s read as %.17g, strtod gives %.17g\n", token.c_str(),
                      q[0][0].x(), expected);
-        CHECK(false);
+        REQUIRE(false);
       }
     }
   }
@@ -245,20 +237,20 @@ int test_wkt_writing()
 {
   Rings rings = { square(0, 0, 1, 1) };
   std::ostringstream out;
-  CGAL::PMA2::write_wkt_polygon(out, rings);
-  CHECK(out.str() == "POLYGON ((0 0, 1 0, 1 1, 0 1, 0 0))");
+  pma_tool::write_wkt_polygon(out, rings);
+  REQUIRE(out.str() == "POLYGON ((0 0, 1 0, 1 1, 0 1, 0 0))");
 
   rings.push_back({ Point(0.1, 0.2), Point(0.3, 0.2), Point(0.3, 0.4) });
   out.str("");
-  CGAL::PMA2::write_wkt_polygon(out, rings);
-  CHECK(out.str() == "POLYGON ((0 0, 1 0, 1 1, 0 1, 0 0), (0.10000000000000001 0.20000000000000001, "
+  pma_tool::write_wkt_polygon(out, rings);
+  REQUIRE(out.str() == "POLYGON ((0 0, 1 0, 1 1, 0 1, 0 0), (0.10000000000000001 0.20000000000000001, "
                      "0.29999999999999999 0.20000000000000001, 0.29999999999999999 0.40000000000000002, "
                      "0.10000000000000001 0.20000000000000001))");
-  CHECK(same_rings(read_wkt(out.str()), rings));
+  REQUIRE(same_rings(read_wkt(out.str()), rings));
 
   out.str("");
-  CGAL::PMA2::write_wkt_polygon(out, Rings());
-  CHECK(out.str() == "POLYGON EMPTY");
+  pma_tool::write_wkt_polygon(out, Rings());
+  REQUIRE(out.str() == "POLYGON EMPTY");
 
   // Bit-exact round trip of random finite doubles, including subnormals and -0.
   std::mt19937_64 rng(42);
@@ -277,8 +269,8 @@ int test_wkt_writing()
   random_rings[1][5] = Point(-0.0, std::numeric_limits<double>::denorm_min());
   random_rings[1][6] = Point(std::numeric_limits<double>::max(), -std::numeric_limits<double>::min());
   out.str("");
-  CGAL::PMA2::write_wkt_polygon(out, random_rings);
-  CHECK(same_rings(read_wkt(out.str()), random_rings));
+  pma_tool::write_wkt_polygon(out, random_rings);
+  REQUIRE(same_rings(read_wkt(out.str()), random_rings));
   return 0;
 }
 
@@ -288,28 +280,28 @@ int test_geojson_reading()
 {
   Rings r = read_geojson(R"({"type": "Polygon", "coordinates": [[[0, 0], [4, 0], [4, 4], [0, 4], [0, 0]],
                                                            [[1, 1], [1, 2], [2, 2], [2, 1], [1, 1]]]})");
-  CHECK(r.size() == 2 && r[0].size() == 4 && r[1].size() == 4);
-  CHECK(r[1][1] == Point(1, 2));
+  REQUIRE(r.size() == 2 && r[0].size() == 4 && r[1].size() == 4);
+  REQUIRE(r[1][1] == Point(1, 2));
 
   // Member order, extra members, escapes in keys, number syntax.
   r = read_geojson(R"( {"bbox": [0, 0, 1, 1], "coordinates": [ [ [0.1, -0.0], [1E0, 0e5] , [1.5e+0, 1],
                       [0.1, -0.0] ] ], "crs": {"x": [true, false, null, "s\"\\\/\b\f\n\r\t\u00e9\ud83d\ude00"]},
                       "typ\u0065": "Polygon"} )");
-  CHECK(r.size() == 1 && r[0].size() == 3);
-  CHECK(same_double(r[0][0].x(), 0.1) && same_double(r[0][0].y(), -0.0));
-  CHECK(r[0][1] == Point(1, 0) && r[0][2] == Point(1.5, 1));
+  REQUIRE(r.size() == 1 && r[0].size() == 3);
+  REQUIRE(same_double(r[0][0].x(), 0.1) && same_double(r[0][0].y(), -0.0));
+  REQUIRE(r[0][1] == Point(1, 0) && r[0][2] == Point(1.5, 1));
 
   // Feature, FeatureCollection with one feature, MultiPolygon with one polygon.
   r = read_geojson(R"({"type": "Feature", "properties": {"name": "a", "n": [1, {"k": 2}]},
                        "geometry": {"type": "Polygon", "coordinates": [[[0, 0], [1, 0], [1, 1], [0, 0]]]}})");
-  CHECK(r.size() == 1 && r[0].size() == 3);
+  REQUIRE(r.size() == 1 && r[0].size() == 3);
   r = read_geojson(R"({"type": "FeatureCollection", "features": [{"type": "Feature", "properties": null,
                        "geometry": {"type": "Polygon", "coordinates": [[[0, 0], [1, 0], [1, 1], [0, 0]]]}}]})");
-  CHECK(r.size() == 1 && r[0].size() == 3);
+  REQUIRE(r.size() == 1 && r[0].size() == 3);
   r = read_geojson(R"({"type": "MultiPolygon", "coordinates": [[[[0, 0], [1, 0], [1, 1], [0, 0]]]]})");
-  CHECK(r.size() == 1 && r[0].size() == 3);
+  REQUIRE(r.size() == 1 && r[0].size() == 3);
   r = read_geojson(R"({"type": "Feature", "geometry": {"type": "MultiPolygon", "coordinates": [[[[0, 0], [1, 0], [1, 1], [0, 0]]]]}})");
-  CHECK(r.size() == 1 && r[0].size() == 3);
+  REQUIRE(r.size() == 1 && r[0].size() == 3);
 
   // Exact numbers: the WKT writer's output, converted to GeoJSON, reads back bit-exactly.
   {
@@ -326,7 +318,7 @@ int test_geojson_reading()
       text += buf;
     }
     text += "]]}";
-    CHECK(same_rings(read_geojson(text), ring));
+    REQUIRE(same_rings(read_geojson(text), ring));
   }
 
   // Errors.
@@ -422,21 +414,21 @@ int test_invalid_files()
     if(f.geometric) {
       Rings rings;
       try {
-        rings = CGAL::PMA2::read_polygon_file<Point>(path);
+        rings = pma_tool::read_polygon_file<Point>(path);
       } catch(const std::exception& e) {
         std::fprintf(stderr, "%s should read without error: %s\n", f.name, e.what());
-        CHECK(false);
+        REQUIRE(false);
       }
       CHECK_INPUT_ERROR(validate(rings), f.message, f.ring, f.vertex);
     } else {
-      CHECK_INPUT_ERROR(CGAL::PMA2::read_polygon_file<Point>(path), f.message, f.ring, f.vertex);
+      CHECK_INPUT_ERROR(pma_tool::read_polygon_file<Point>(path), f.message, f.ring, f.vertex);
     }
   }
 
   // Unreadable files.
-  CHECK_INPUT_ERROR(CGAL::PMA2::read_polygon_file<Point>(data("no_such_file.wkt")),
+  CHECK_INPUT_ERROR(pma_tool::read_polygon_file<Point>(data("no_such_file.wkt")),
                     "cannot read file '" + data("no_such_file.wkt") + "': No such file or directory", -1, -1);
-  CHECK_INPUT_ERROR(CGAL::PMA2::read_polygon_file<Point>(data("invalid")),
+  CHECK_INPUT_ERROR(pma_tool::read_polygon_file<Point>(data("invalid")),
                     "cannot read file '" + data("invalid") + "': ", -1, -1);
   return 0;
 }
@@ -449,20 +441,20 @@ int test_shipped_data()
     auto start = std::chrono::steady_clock::now();
     Rings rings;
     try {
-      rings = CGAL::PMA2::read_polygon_file<Point>(data(name));
+      rings = pma_tool::read_polygon_file<Point>(data(name));
       validate(rings);
     } catch(const std::exception& e) {
       std::fprintf(stderr, "%s should be valid: %s\n", name, e.what());
-      CHECK(false);
+      REQUIRE(false);
     }
     std::size_t n = 0;
     for(const auto& ring : rings)
       n += ring.size();
     std::printf("  %-18s %5zu rings %7zu vertices: read + validate %.3f s\n", name, rings.size(), n,
                 seconds_since(start));
-    CHECK(!rings.empty() && rings[0].size() >= 3);
+    REQUIRE(!rings.empty() && rings[0].size() >= 3);
     if(std::strcmp(name, "syn_cheese1k.wkt") == 0)
-      CHECK(rings.size() == 1001);
+      REQUIRE(rings.size() == 1001);
   }
   return 0;
 }
@@ -746,10 +738,10 @@ int test_random_against_brute_force()
     }
     if(got != expected) {
       std::ostringstream wkt;
-      CGAL::PMA2::write_wkt_polygon(wkt, rings);
+      pma_tool::write_wkt_polygon(wkt, rings);
       std::fprintf(stderr, "trial %d: validate says %s (%s), brute force says %s for\n  %s\n", trial,
                    got ? "valid" : "invalid", message.c_str(), expected ? "valid" : "invalid", wkt.str().c_str());
-      CHECK(false);
+      REQUIRE(false);
     }
     (expected ? valid : invalid)++;
     if(trial % 50 == 1)
@@ -759,8 +751,8 @@ int test_random_against_brute_force()
   std::printf("    (of which larger polygons: %d valid, %d invalid)\n", big_valid, big_invalid);
   for(const auto& c : classes)
     std::printf("    %-36s %6d\n", c.first.c_str(), c.second);
-  CHECK(valid > 1000 && invalid > 1000);
-  CHECK(classes.size() == 9); // every class of geometric error but non-finite coordinates
+  REQUIRE(valid > 1000 && invalid > 1000);
+  REQUIRE(classes.size() == 9); // every class of geometric error but non-finite coordinates
   return 0;
 }
 
@@ -805,12 +797,12 @@ int test_performance()
   {
     Rings star = star_polygon(1000000, 2);
     std::ostringstream out;
-    CGAL::PMA2::write_wkt_polygon(out, star);
+    pma_tool::write_wkt_polygon(out, star);
     std::string text = out.str();
     auto start = std::chrono::steady_clock::now();
     Rings back = read_wkt(text);
     double read_time = seconds_since(start);
-    CHECK(same_rings(back, star));
+    REQUIRE(same_rings(back, star));
     start = std::chrono::steady_clock::now();
     CHECK_VALID(back);
     double validate_time = seconds_since(start);
@@ -847,18 +839,18 @@ int test_reader_fuzz()
     try {
       Rings r = (trial % 3 == 2) ? read_geojson(text) : read_wkt(text);
       for(const auto& ring : r)
-        CHECK(ring.size() >= 3);
+        REQUIRE(ring.size() >= 3);
       ++parsed;
       try {
         validate(r);
       } catch(const Input_error&) {
       }
     } catch(const Input_error& e) {
-      CHECK(std::string(e.what()).find('\n') == std::string::npos);
+      REQUIRE(std::string(e.what()).find('\n') == std::string::npos);
       ++rejected;
     } catch(const std::exception& e) {
       std::fprintf(stderr, "unexpected exception %s for input\n%s\n", e.what(), text.c_str());
-      CHECK(false);
+      REQUIRE(false);
     }
   }
   std::printf("  corrupted inputs: %d read, %d rejected\n", parsed, rejected);
@@ -879,10 +871,10 @@ int test_locale()
   }
   Rings r = read_wkt("POLYGON ((0.5 0, 1.25 0, 1 1.5, 0.5 0))");
   std::ostringstream out;
-  CGAL::PMA2::write_wkt_polygon(out, r);
+  pma_tool::write_wkt_polygon(out, r);
   std::setlocale(LC_NUMERIC, "C");
-  CHECK(r[0][0] == Point(0.5, 0) && r[0][1] == Point(1.25, 0) && r[0][2] == Point(1, 1.5));
-  CHECK(out.str() == "POLYGON ((0.5 0, 1.25 0, 1 1.5, 0.5 0))");
+  REQUIRE(r[0][0] == Point(0.5, 0) && r[0][1] == Point(1.25, 0) && r[0][2] == Point(1, 1.5));
+  REQUIRE(out.str() == "POLYGON ((0.5 0, 1.25 0, 1 1.5, 0.5 0))");
   return 0;
 }
 
@@ -913,5 +905,5 @@ int main()
     std::fflush(stdout);
   }
   std::printf("%d of %zu test groups failed\n", failed, sizeof(tests) / sizeof(tests[0]));
-  return failed == 0 ? 0 : 1;
+  return failed == 0 ? pma_test::report("test_input") : 1;
 }

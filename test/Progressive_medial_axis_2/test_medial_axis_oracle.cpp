@@ -11,9 +11,12 @@
 // and added to data/regressions/.
 
 #include <CGAL/Progressive_medial_axis_2.h>
-#include <CGAL/Progressive_medial_axis_2/IO/medial_axis_io.h>
-#include <CGAL/Progressive_medial_axis_2/IO/polygon_io.h>
+#include <CGAL/Simple_cartesian.h>
+#include <CGAL/CORE_Expr.h>
+#include <pma_tool/medial_axis_io.h>
+#include <pma_tool/polygon_io.h>
 
+#include <pma_test/check.h>
 #include <pma_test/sdg_oracle.h>
 #include <pma_test/random_polygons.h>
 #include <pma_test/degenerate_shapes.h>
@@ -26,6 +29,7 @@
 #include <cstdlib>
 #include <dirent.h>
 #include <iostream>
+#include <map>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -35,21 +39,11 @@ namespace {
 typedef CGAL::Epick::Point_2 Point;
 typedef std::vector<std::vector<Point> > Rings;
 
-int failures = 0;
-
-#define CHECK(cond, msg)                                                             \
-  do {                                                                               \
-    if(!(cond)) {                                                                    \
-      ++failures;                                                                    \
-      std::cerr << __FILE__ << ":" << __LINE__ << ": check failed: " #cond "\n  "    \
-                << msg << "\n";                                                      \
-    }                                                                                \
-  } while(0)
 
 std::string wkt(const Rings& rings)
 {
   std::ostringstream s;
-  CGAL::PMA2::write_wkt_polygon(s, rings);
+  pma_tool::write_wkt_polygon(s, rings);
   return s.str();
 }
 
@@ -99,7 +93,7 @@ class Checker
 public:
   typedef CGAL::Progressive_medial_axis_2<Traits> PMA;
   typedef typename PMA::Medial_axis MA;
-  typedef CGAL::PMA2::Generator_names<MA> Names;
+  typedef pma_tool::Generator_names<MA> Names;
 
   // Compares the current axis of `pma` with the oracle and checks the
   // invariants.  `input_names`: name generators by the input (full shape).
@@ -113,8 +107,8 @@ public:
     for(const auto& r : shape_names.rings()) {
       shape.emplace_back();
       shape_xy.emplace_back();
-      for(int i : r) {
-        auto p = MA::to_xy(ma.points()[i]);
+      for(const auto& v : r) {
+        auto p = MA::to_xy(ma.point(v));
         shape.back().push_back(Point(p.first, p.second));
         shape_xy.back().push_back(p);
       }
@@ -122,15 +116,15 @@ public:
     const Rings& oracle_rings = input_names ? input : shape;
     pma_test::Oracle_result oracle = pma_test::sdg_medial_axis(oracle_rings);
     std::vector<pma_test::Oracle_curve> ours;
-    for(const auto& c : CGAL::PMA2::named_curves(ma, names))
+    for(const auto& c : pma_tool::named_curves(ma, names))
       ours.push_back(pma_test::Oracle_curve{c.a, c.b, c.length});
     pma_test::Curve_diff diff = pma_test::compare_curves(ours, oracle.curves, oracle.bbox_diagonal);
-    const int before = failures;
+    const int before = pma_test::failures();
     CHECK(diff.ok(), what << " step " << pma.current_step() << ": pairs differ from the oracle (ours | oracle)\n"
                           << diff.report() << "  shape: " << wkt(oracle_rings));
     check_invariants(pma, what, shape_xy, oracle.bbox_diagonal, int(shape.size()) - 1);
     ++comparisons;
-    return failures == before;
+    return pma_test::failures() == before;
   }
 
   void check_invariants(const PMA& pma, const std::string& what,
@@ -138,24 +132,23 @@ public:
                         double diagonal, int holes)
   {
     const MA& ma = pma.medial_axis();
-    const auto& hds = ma.halfedge_structure();
     // The medial axis is connected and has one independent cycle per hole.
+    typedef typename MA::Vertex_handle Vertex;
     std::size_t nv = 0, ne = 0;
-    std::vector<int> parent(hds.vertex_capacity());
-    for(std::size_t i = 0; i < parent.size(); ++i) parent[i] = int(i);
-    auto find = [&](int x) {
+    std::map<Vertex, Vertex> parent;
+    for(const auto& v : ma.vertices()) { ++nv; parent[v] = v; }
+    auto find = [&](Vertex x) {
       while(parent[x] != x) x = parent[x] = parent[parent[x]];
       return x;
     };
     int components = 0;
-    for(const auto& v : ma.vertices()) { ++nv; (void)v; }
     for(const auto& e : ma.edges()) {
       ++ne;
-      int a = find(e.source().index()), b = find(e.target().index());
+      Vertex a = find(e.source()), b = find(e.target());
       if(a != b) parent[a] = b;
     }
     for(const auto& v : ma.vertices())
-      if(find(v.index()) == v.index()) ++components;
+      if(find(v) == v) ++components;
     CHECK(components == 1, what << " step " << pma.current_step() << ": the axis has " << components << " components");
     CHECK(long(ne) - long(nv) + 1 == holes,
           what << " step " << pma.current_step() << ": the axis has " << (long(ne) - long(nv) + 1)
@@ -202,13 +195,8 @@ bool run_polygon(Checker<Traits>& checker, const Rings& rings, const std::string
                  std::vector<double> fractions = {})
 {
   typedef CGAL::Progressive_medial_axis_2<Traits> PMA;
-  typename PMA::Rings converted;
-  for(const auto& r : rings) {
-    converted.emplace_back();
-    for(const Point& p : r) converted.back().push_back(typename PMA::Point_2(p.x(), p.y()));
-  }
-  PMA pma(converted);
-  const int before = failures;
+  PMA pma(rings);
+  const int before = pma_test::failures();
   if(every_step) {
     do {
       if(!checker.compare(pma, false, what, rings)) break;
@@ -222,11 +210,11 @@ bool run_polygon(Checker<Traits>& checker, const Rings& rings, const std::string
     }
   }
   pma.refine_all();
-  if(failures == before)
+  if(pma_test::failures() == before)
     checker.compare(pma, true, what, rings);
   CHECK(pma.statistics().anomalies == 0 || !Traits::Has_exact_decisions,
         what << ": " << pma.statistics().anomalies << " forced events with exact decisions");
-  return failures == before;
+  return pma_test::failures() == before;
 }
 
 Rings reversed_if(const Rings& r, bool rev)
@@ -263,7 +251,7 @@ void random_tests(Checker<Traits>& checker, const Options& o)
       bool every = i < step_polygons;
       if(!run_polygon(checker, rings, what, every, {0.01, 0.33, 0.5, 0.75})) {
         std::cerr << "  failing polygon: " << wkt(rings) << "\n";
-        if(failures > 20) return;
+        if(pma_test::failures() > 20) return;
       }
       ++done;
     }
@@ -291,7 +279,7 @@ void hole_tests(Checker<Traits>& checker, const Options& o)
                        std::to_string(n) + " vertices)";
     if(!run_polygon(checker, rings, what, i < step_polygons, {0.01, 0.2, 0.4, 0.6, 0.8, 0.95})) {
       std::cerr << "  failing polygon: " << wkt(rings) << "\n";
-      if(failures > 20) return;
+      if(pma_test::failures() > 20) return;
     }
     ++done;
   }
@@ -323,7 +311,7 @@ void data_tests(Checker<Traits>& checker, const Options& o)
       std::cout << "data: " << name << " skipped\n";
       continue;
     }
-    Rings rings = CGAL::PMA2::read_polygon_file<Point>(dir + "/" + name + ".wkt");
+    Rings rings = pma_tool::read_polygon_file<Point>(dir + "/" + name + ".wkt");
     std::size_t n = rings[0].size();
     auto start = std::chrono::steady_clock::now();
     (void)n;
@@ -361,7 +349,7 @@ void degenerate_tests(Checker<Traits>& checker, const Options& o)
     shapes.push_back({"grid cells 45-degree cuts seed " + std::to_string(seed), pma_test::grid_cell_polygon_45(seed, 20), true});
     shapes.push_back({"concyclic seed " + std::to_string(seed), pma_test::concyclic_polygon(seed, 24 + 8 * seed), false});
   }
-  shapes.push_back({"syn_maze20", CGAL::PMA2::read_polygon_file<Point>(std::string(PMA_TEST_DATA) + "/syn_maze20.wkt"), true});
+  shapes.push_back({"syn_maze20", pma_tool::read_polygon_file<Point>(std::string(PMA_TEST_DATA) + "/syn_maze20.wkt"), true});
   shapes.push_back({"hilbert order 4", pma_test::hilbert_polygon(4), true});
   shapes.push_back({"hilbert order 5, no flat vertices", pma_test::hilbert_polygon(5, false), false});
   shapes.push_back({"koch order 3 exact", pma_test::koch_snowflake_nested(3, -1), false});
@@ -372,24 +360,19 @@ void degenerate_tests(Checker<Traits>& checker, const Options& o)
   shapes.push_back({"regular 96-gon", pma_test::regular_ngon(96, 1.0, -1), false});
   shapes.push_back({"regular 24-gon with 6 holes", pma_test::regular_ngon_with_holes(24, 6, 8, 10.0, 6), false});
   for(const std::string& f : list_wkt(std::string(PMA_TEST_DATA) + "/glyphs"))
-    shapes.push_back({f.substr(f.find_last_of('/') + 1), CGAL::PMA2::read_polygon_file<Point>(f), false});
+    shapes.push_back({f.substr(f.find_last_of('/') + 1), pma_tool::read_polygon_file<Point>(f), false});
 
   for(const Shape& shape : shapes) {
     if(shape.every_50th) {
       typedef CGAL::Progressive_medial_axis_2<Traits> PMA;
-      typename PMA::Rings converted;
-      for(const auto& r : shape.rings) {
-        converted.emplace_back();
-        for(const Point& p : r) converted.back().push_back(typename PMA::Point_2(p.x(), p.y()));
-      }
-      PMA pma(converted);
+      PMA pma(shape.rings);
       std::vector<double> fractions;
       for(std::size_t s = 50; s < pma.number_of_steps(); s += 50) fractions.push_back(double(s) / double(pma.number_of_steps()));
       run_polygon(checker, shape.rings, shape.name, false, fractions);
     } else {
       run_polygon(checker, shape.rings, shape.name, false, {0.5});
     }
-    if(failures > 20) return;
+    if(pma_test::failures() > 20) return;
   }
   std::cout << "degenerate: " << shapes.size() << " shapes\n";
 }
@@ -399,7 +382,7 @@ void regression_tests(Checker<Traits>& checker, const Options&)
 {
   std::size_t count = 0;
   for(const std::string& f : list_wkt(std::string(PMA_TEST_DATA) + "/regressions")) {
-    Rings rings = CGAL::PMA2::read_polygon_file<Point>(f);
+    Rings rings = pma_tool::read_polygon_file<Point>(f);
     run_polygon(checker, rings, f, true);
     ++count;
   }
@@ -423,9 +406,9 @@ int run_all(const Options& o)
     if(Traits::Has_exact_decisions) degenerate_tests(checker, o);
     else std::cout << "degenerate: skipped (decisions are not exact)\n";
   }
-  std::cout << checker.comparisons << " comparisons with the oracle, " << failures << " failures, "
+  std::cout << checker.comparisons << " comparisons with the oracle, " << pma_test::failures() << " failures, "
             << std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() << " s\n";
-  return failures == 0 ? 0 : 1;
+  return pma_test::failures() == 0 ? 0 : 1;
 }
 
 } // namespace
@@ -443,7 +426,7 @@ int main(int argc, char** argv)
     else if(a == "--no-grid") o.no_grid = true;
     else { std::cerr << "unknown argument " << a << "\n"; return 2; }
   }
-  if(o.traits == "epick") return run_all<CGAL::Progressive_medial_axis_traits_2<CGAL::Epick> >(o);
+  if(o.traits == "epick") return run_all<CGAL::Progressive_medial_axis_traits_2<CGAL::Simple_cartesian<double> > >(o);
   if(o.traits == "exact") return run_all<CGAL::Progressive_medial_axis_traits_2<CGAL::Simple_cartesian<CORE::Expr> > >(o);
-  return run_all<CGAL::Progressive_medial_axis_filtered_traits_2<> >(o);
+  return run_all<CGAL::Progressive_medial_axis_traits_2<CGAL::Epick> >(o);
 }

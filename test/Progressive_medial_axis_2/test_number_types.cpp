@@ -6,32 +6,25 @@
 #include <CGAL/Progressive_medial_axis_2/internal/One_root_rational.h>
 #include <CGAL/Progressive_medial_axis_2/internal/Nested_root_number.h>
 
+#include <pma_test/check.h>
+
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <random>
 
 using CGAL::Gmpq;
-using CGAL::PMA2::internal::Not_one_root;
-using CGAL::PMA2::internal::One_root_rational;
-using CGAL::PMA2::internal::One_root_sqrt;
-using CGAL::PMA2::internal::Small_rational;
-using CGAL::PMA2::internal::Small_rational_overflow;
-using CGAL::PMA2::internal::Small_one_root;
-using CGAL::PMA2::internal::Nested_root_context;
-using CGAL::PMA2::internal::Nested_root_number;
+using CGAL::Progressive_medial_axes::internal::Not_one_root;
+using CGAL::Progressive_medial_axes::internal::One_root_rational;
+using CGAL::Progressive_medial_axes::internal::One_root_sqrt;
+using CGAL::Progressive_medial_axes::internal::Small_rational;
+using CGAL::Progressive_medial_axes::internal::Small_rational_overflow;
+using CGAL::Progressive_medial_axes::internal::Small_one_root;
+using CGAL::Progressive_medial_axes::internal::Nested_root_context;
+using CGAL::Progressive_medial_axes::internal::Nested_root_number;
 
 namespace {
 
-int failures = 0;
-
-void check(bool ok, const char* what)
-{
-  if(!ok) {
-    ++failures;
-    std::printf("FAIL: %s\n", what);
-  }
-}
 
 One_root_rational root(int d) { return sqrt(One_root_rational(d)); }
 
@@ -78,23 +71,23 @@ void nested_root_tests()
   Nested_root_context context;
   const N two(2), three(3);
   const N s2 = nroot(two), s3 = nroot(three), s6 = nroot(N(6)), s8 = nroot(N(8));
-  check(s8 * s2 == N(4), "nested: sqrt 8 * sqrt 2 = 4");
-  check(s8 == N(2) * s2, "nested: sqrt 8 = 2 sqrt 2 (shared root)");
-  check(s2 * s3 == s6, "nested: sqrt 2 sqrt 3 = sqrt 6");
-  check((s2 + s3) * (s2 + s3) == N(5) + N(2) * s6, "nested: (sqrt 2 + sqrt 3)^2 = 5 + 2 sqrt 6");
-  check(nroot(N(5) + N(2) * s6) == s2 + s3, "nested: sqrt(5 + 2 sqrt 6) = sqrt 2 + sqrt 3 (denests)");
+  CHECK(s8 * s2 == N(4), "nested: sqrt 8 * sqrt 2 = 4");
+  CHECK(s8 == N(2) * s2, "nested: sqrt 8 = 2 sqrt 2 (shared root)");
+  CHECK(s2 * s3 == s6, "nested: sqrt 2 sqrt 3 = sqrt 6");
+  CHECK((s2 + s3) * (s2 + s3) == N(5) + N(2) * s6, "nested: (sqrt 2 + sqrt 3)^2 = 5 + 2 sqrt 6");
+  CHECK(nroot(N(5) + N(2) * s6) == s2 + s3, "nested: sqrt(5 + 2 sqrt 6) = sqrt 2 + sqrt 3 (denests)");
   const N d = nroot(N(3) + N(2) * s2);   // = 1 + sqrt 2, a root dependent on sqrt 2
-  check(d == N(1) + s2 && d - s2 == N(1), "nested: sqrt(3 + 2 sqrt 2) = 1 + sqrt 2");
-  check(N(1) / (d - s2) == N(1), "nested: division by a denominator with dependent roots");
-  check(N(7) / (d + s2 - N(1)) == N(7) / (N(2) * s2), "nested: division, dependent conjugate");
+  CHECK(d == N(1) + s2 && d - s2 == N(1), "nested: sqrt(3 + 2 sqrt 2) = 1 + sqrt 2");
+  CHECK(N(1) / (d - s2) == N(1), "nested: division by a denominator with dependent roots");
+  CHECK(N(7) / (d + s2 - N(1)) == N(7) / (N(2) * s2), "nested: division, dependent conjugate");
   const N q = N(1) + s2 + s3;
-  check((N(1) / q) * q == N(1), "nested: 1 / (1 + sqrt 2 + sqrt 3) * (1 + sqrt 2 + sqrt 3) = 1");
+  CHECK((N(1) / q) * q == N(1), "nested: 1 / (1 + sqrt 2 + sqrt 3) * (1 + sqrt 2 + sqrt 3) = 1");
   // sqrt(a + sqrt b) sqrt(a - sqrt b) = sqrt(a^2 - b)
   const N sb = nroot(N(7));
-  check(nroot(N(4) + sb) * nroot(N(4) - sb) == N(3), "nested: sqrt(4 + sqrt 7) sqrt(4 - sqrt 7) = 3");
-  check(nroot(N(4) + sb) > nroot(N(4) - sb) && !(nroot(N(4) + sb) < nroot(N(4) - sb)), "nested: ordering");
-  check(s2.to_double() == std::sqrt(2.0) && (N(1) / N(3)).to_double() == 1.0 / 3.0, "nested: to_double");
-  check(d.to_interval().inf() <= 1 + std::sqrt(2.0) && d.to_interval().sup() >= 1 + std::sqrt(2.0), "nested: to_interval");
+  CHECK(nroot(N(4) + sb) * nroot(N(4) - sb) == N(3), "nested: sqrt(4 + sqrt 7) sqrt(4 - sqrt 7) = 3");
+  CHECK(nroot(N(4) + sb) > nroot(N(4) - sb) && !(nroot(N(4) + sb) < nroot(N(4) - sb)), "nested: ordering");
+  CHECK(s2.to_double() == std::sqrt(2.0) && (N(1) / N(3)).to_double() == 1.0 / 3.0, "nested: to_double");
+  CHECK(d.to_interval().inf() <= 1 + std::sqrt(2.0) && d.to_interval().sup() >= 1 + std::sqrt(2.0), "nested: to_interval");
 
   // random a + b sqrt(c + e sqrt f) + g sqrt h against the same built another
   // way, and against a perturbed value, signs checked against MPFR
@@ -108,7 +101,7 @@ void nested_root_tests()
     // the same value: b sqrt(c + e sqrt f) = sqrt(b^2 c + b^2 e sqrt f) sign(b)
     const N inner = nroot(N(b * b * c) + N(b * b * e) * nroot(N(f)));
     const N y = N(a) + (b < 0 ? -inner : inner) + N(g) * nroot(N(4 * h)) / N(2);
-    if(!(x == y)) { ++failures; std::printf("FAIL: nested identity %d\n", i); }
+    if(!(x == y)) { ++pma_test::failures(); std::printf("FAIL: nested identity %d\n", i); }
     const int k = small(rng);
     const N z = y + N(k) * nroot(N(2)) - N(k) * nroot(N(3));
     const CGAL::Sign expected = mpfr_sign([&](mpfr_t r) {
@@ -118,7 +111,7 @@ void nested_root_tests()
       mpfr_set_si(t, 3, MPFR_RNDN); mpfr_sqrt(t, t, MPFR_RNDN); mpfr_mul_si(t, t, k, MPFR_RNDN); mpfr_sub(r, r, t, MPFR_RNDN);
       mpfr_clear(t);
     });
-    if((z - x).sign() != expected) { ++failures; std::printf("FAIL: nested sign %d\n", i); }
+    if((z - x).sign() != expected) { ++pma_test::failures(); std::printf("FAIL: nested sign %d\n", i); }
     ++compared;
   }
   std::printf("%d nested-root identities and signs\n", compared);
@@ -128,12 +121,12 @@ void nested_root_tests()
 // overflow is reported, never wrong.
 void small_rational_tests()
 {
-  check(Small_rational(0.75) * Small_rational(4) == Small_rational(3), "small: 0.75 * 4 = 3");
-  check((Small_rational(1) / Small_rational(3)).to_gmpq() == Gmpq(1, 3), "small: 1 / 3");
-  check((Small_rational(std::ldexp(1.0, -100)) + Small_rational(1)).to_gmpq() == Gmpq(std::ldexp(1.0, -100)) + Gmpq(1), "small: 2^-100 + 1");
+  CHECK(Small_rational(0.75) * Small_rational(4) == Small_rational(3), "small: 0.75 * 4 = 3");
+  CHECK((Small_rational(1) / Small_rational(3)).to_gmpq() == Gmpq(1, 3), "small: 1 / 3");
+  CHECK((Small_rational(std::ldexp(1.0, -100)) + Small_rational(1)).to_gmpq() == Gmpq(std::ldexp(1.0, -100)) + Gmpq(1), "small: 2^-100 + 1");
   Small_rational r;
-  check(rational_square_root(Small_rational(9) / Small_rational(16), r) && r == Small_rational(0.75), "small: sqrt(9/16)");
-  check(!rational_square_root(Small_rational(2), r), "small: 2 is not a square");
+  CHECK(rational_square_root(Small_rational(9) / Small_rational(16), r) && r == Small_rational(0.75), "small: sqrt(9/16)");
+  CHECK(!rational_square_root(Small_rational(2), r), "small: 2 is not a square");
   bool thrown = false;
   try {
     Small_rational x(1e18);
@@ -141,7 +134,7 @@ void small_rational_tests()
   } catch(Small_rational_overflow&) {
     thrown = true;
   }
-  check(thrown, "small: overflow is reported");
+  CHECK(thrown, "small: overflow is reported");
   // random expressions in both types
   std::mt19937 rng(5);
   std::uniform_int_distribution<int> small(-1000, 1000);
@@ -157,12 +150,12 @@ void small_rational_tests()
         else if(op == 2) { y = x * z - y; gy = gx * gz - gy; }
         else { z = (x + y) / (z * z + Small_rational(1)); gz = (gx + gy) / (gz * gz + Gmpq(1)); }
         if(x.to_gmpq() != gx || y.to_gmpq() != gy || z.to_gmpq() != gz || x.sign() != CGAL::sign(gx)) {
-          ++failures;
+          ++pma_test::failures();
           std::printf("FAIL: small rational differs from Gmpq (%d)\n", i);
           break;
         }
         if(CGAL::to_interval(gx).first < x.to_interval().inf() || CGAL::to_interval(gx).second > x.to_interval().sup()) {
-          ++failures;
+          ++pma_test::failures();
           std::printf("FAIL: small rational interval (%d)\n", i);
           break;
         }
@@ -183,7 +176,7 @@ void small_rational_tests()
     const bool same_root = d1 == d2 || b1 == 0 || b2 == 0;
     if(sign_of_difference(p, q) != sign_of_difference(gp, gq) ||
        (same_root && (p * q).to_gmpq() != gp * gq)) {
-      ++failures;
+      ++pma_test::failures();
       std::printf("FAIL: small one-root differs from Gmpq (%d)\n", i);
     }
   }
@@ -197,41 +190,41 @@ int main()
   small_rational_tests();
   nested_root_tests();
   // squares of rationals stay rational
-  check(root(49).is_rational() && root(49) == One_root_rational(7), "sqrt(49) = 7");
-  check(sqrt(One_root_rational(Gmpq(9, 4))) == One_root_rational(Gmpq(3, 2)), "sqrt(9/4) = 3/2");
+  CHECK(root(49).is_rational() && root(49) == One_root_rational(7), "sqrt(49) = 7");
+  CHECK(sqrt(One_root_rational(Gmpq(9, 4))) == One_root_rational(Gmpq(3, 2)), "sqrt(9/4) = 3/2");
   // (1 + sqrt 2)^2 = 3 + 2 sqrt 2, and sqrt 8 sqrt 2 = 4 (commensurable roots)
   const One_root_rational s2 = root(2);
-  check((One_root_rational(1) + s2) * (One_root_rational(1) + s2) == One_root_rational(3) + One_root_rational(2) * s2,
+  CHECK((One_root_rational(1) + s2) * (One_root_rational(1) + s2) == One_root_rational(3) + One_root_rational(2) * s2,
         "(1 + sqrt 2)^2 = 3 + 2 sqrt 2");
-  check(root(8) * s2 == One_root_rational(4), "sqrt 8 * sqrt 2 = 4");
-  check(One_root_rational(1) / (s2 - One_root_rational(1)) == s2 + One_root_rational(1), "1 / (sqrt 2 - 1) = sqrt 2 + 1");
+  CHECK(root(8) * s2 == One_root_rational(4), "sqrt 8 * sqrt 2 = 4");
+  CHECK(One_root_rational(1) / (s2 - One_root_rational(1)) == s2 + One_root_rational(1), "1 / (sqrt 2 - 1) = sqrt 2 + 1");
   // different roots: comparisons work, arithmetic is handed on
-  check(root(2) < root(3) && root(3) > root(2) && root(2) != root(3), "sqrt 2 < sqrt 3");
+  CHECK(root(2) < root(3) && root(3) > root(2) && root(2) != root(3), "sqrt 2 < sqrt 3");
   bool thrown = false;
   try {
     (void)(root(2) + root(3));
   } catch(Not_one_root&) {
     thrown = true;
   }
-  check(thrown, "sqrt 2 + sqrt 3 throws Not_one_root");
+  CHECK(thrown, "sqrt 2 + sqrt 3 throws Not_one_root");
   thrown = false;
   try {
     (void)sqrt(One_root_rational(1) + s2);
   } catch(Not_one_root&) {
     thrown = true;
   }
-  check(thrown, "sqrt(1 + sqrt 2) throws Not_one_root");
+  CHECK(thrown, "sqrt(1 + sqrt 2) throws Not_one_root");
 
   // alpha + sqrt(rho): sqrt(3 + 2 sqrt 2) = 1 + sqrt 2; sqrt 2 + sqrt 3 = sqrt(5 + 2 sqrt 6)
   One_root_sqrt x{One_root_rational(0), One_root_rational(3) + One_root_rational(2) * s2};
   One_root_sqrt y{One_root_rational(1) + s2, One_root_rational(0)};
-  check(sign_of_difference(x, y) == CGAL::ZERO, "sqrt(3 + 2 sqrt 2) = 1 + sqrt 2");
+  CHECK(sign_of_difference(x, y) == CGAL::ZERO, "sqrt(3 + 2 sqrt 2) = 1 + sqrt 2");
   One_root_sqrt u{s2, One_root_rational(3)};
   One_root_sqrt v{One_root_rational(0), One_root_rational(5) + One_root_rational(2) * root(6)};
-  check(sign_of_difference(u, v) == CGAL::ZERO && sign_of_difference(v, u) == CGAL::ZERO,
+  CHECK(sign_of_difference(u, v) == CGAL::ZERO && sign_of_difference(v, u) == CGAL::ZERO,
         "sqrt 2 + sqrt 3 = sqrt(5 + 2 sqrt 6)");
   One_root_sqrt w{s2, One_root_rational(Gmpq(300001, 100000))};
-  check(sign_of_difference(w, v) == CGAL::POSITIVE && sign_of_difference(v, w) == CGAL::NEGATIVE,
+  CHECK(sign_of_difference(w, v) == CGAL::POSITIVE && sign_of_difference(v, w) == CGAL::NEGATIVE,
         "sqrt 2 + sqrt 3.00001 > sqrt(5 + 2 sqrt 6)");
 
   // random a1 + b1 sqrt d1 against a2 + b2 sqrt d2 (same or different roots)
@@ -247,12 +240,12 @@ int main()
     const CGAL::Sign expected = std::abs(m) < 1e-200 ? CGAL::ZERO : (m > 0 ? CGAL::POSITIVE : CGAL::NEGATIVE);
     const CGAL::Sign got = sign_of_difference(p, q);
     if(got != expected) {
-      ++failures;
+      ++pma_test::failures();
       std::printf("FAIL: sign(%ld + %ld sqrt %ld - (%ld + %ld sqrt %ld)) = %d, expected %d\n", a1, b1, d1, a2, b2, d2,
                   int(got), int(expected));
     }
     ++compared;
   }
-  std::printf("%d random comparisons, %d failures\n", compared, failures);
-  return failures == 0 ? 0 : 1;
+  std::printf("%d random comparisons\n", compared);
+  return pma_test::report("test_number_types");
 }

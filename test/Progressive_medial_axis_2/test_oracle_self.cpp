@@ -14,13 +14,14 @@
 //
 // Uses a CHECK macro that is not compiled out by NDEBUG; exits 1 if any check failed.
 
+#include <pma_test/check.h>
 #include <pma_test/compare_curves.h>
 #include <pma_test/random_polygons.h>
 #include <pma_test/sdg_oracle.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_2_algorithms.h>
-#include <CGAL/Progressive_medial_axis_2/IO/polygon_io.h>
+#include <pma_tool/polygon_io.h>
 #include <CGAL/Progressive_medial_axis_2/validate_polygon.h>
 
 #include <algorithm>
@@ -36,19 +37,6 @@
 
 namespace {
 
-int failures = 0;
-int checks = 0;
-
-#define CHECK_MSG(cond, msg)                                                            \
-  do {                                                                                  \
-    ++checks;                                                                           \
-    if(!(cond)) {                                                                       \
-      ++failures;                                                                       \
-      std::fprintf(stderr, "%s:%d: CHECK failed: %s  [%s]\n", __FILE__, __LINE__, #cond, \
-                   std::string(msg).c_str());                                           \
-    }                                                                                   \
-  } while(0)
-#define CHECK(cond) CHECK_MSG(cond, "")
 
 typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
 typedef K::Point_2 Point;
@@ -191,11 +179,11 @@ void structural_checks(const std::string& name, const Rings& rings, const pma_te
   std::vector<std::vector<int> > adj(G.nodes.size());
   std::size_t E = 0;
   for(const pma_test::Oracle_edge& e : G.edges) {
-    CHECK_MSG(e.node0 >= 0 && e.node1 >= 0, name);
-    CHECK_MSG(e.a < e.b, name + ": unsorted pair " + e.a + " " + e.b);
-    CHECK_MSG(e.length >= 0 && std::isfinite(e.length), name);
+    CHECK(e.node0 >= 0 && e.node1 >= 0, name);
+    CHECK(e.a < e.b, name + ": unsorted pair " + e.a + " " + e.b);
+    CHECK(e.length >= 0 && std::isfinite(e.length), name);
     if(e.node0 == e.node1) {
-      CHECK_MSG(e.length == 0, name + ": loop with positive length");
+      CHECK(e.length == 0, name + ": loop with positive length");
       continue;
     }
     ++E;
@@ -217,8 +205,8 @@ void structural_checks(const std::string& name, const Rings& rings, const pma_te
         if(comp[w] < 0) { comp[w] = static_cast<int>(C); stack.push_back(w); }
     }
   }
-  CHECK_MSG(C == 1, name + ": medial axis has " + std::to_string(C) + " components");
-  CHECK_MSG(E + C == V + holes,
+  CHECK(C == 1, name + ": medial axis has " + std::to_string(C) + " components");
+  CHECK(E + C == V + holes,
             name + ": cycle rank " + std::to_string(static_cast<long>(E + C) - static_cast<long>(V)) +
               " != holes " + std::to_string(holes));
 
@@ -233,10 +221,10 @@ void structural_checks(const std::string& name, const Rings& rings, const pma_te
     const std::size_t d = adj[n].size();
     if(d == 0) continue;
     if(node.zero_radius) {
-      CHECK_MSG(d == 1, name + ": radius-0 node of degree " + std::to_string(d));
+      CHECK(d == 1, name + ": radius-0 node of degree " + std::to_string(d));
     } else {
-      CHECK_MSG(node.r > 0, name);
-      CHECK_MSG(d >= 2, name + ": dangling medial curve end at a node of positive radius");
+      CHECK(node.r > 0, name);
+      CHECK(d >= 2, name + ": dangling medial curve end at a node of positive radius");
     }
     if(d == 1) ++degree1;
     if(d == 2 && !node.zero_radius) {
@@ -252,10 +240,10 @@ void structural_checks(const std::string& name, const Rings& rings, const pma_te
            std::count(node.sites.begin(), node.sites.end(), e1))
           reason = true;
       }
-      CHECK_MSG(reason, name + ": degree-2 node without a reason");
+      CHECK(reason, name + ": degree-2 node without a reason");
     }
   }
-  CHECK_MSG(degree1 == convex, name + ": " + std::to_string(degree1) + " curve ends on the boundary, " +
+  CHECK(degree1 == convex, name + ": " + std::to_string(degree1) + " curve ends on the boundary, " +
                                  std::to_string(convex) + " convex vertices");
 
   // every generator (edge, reflex vertex) appears in some curve; no non-generator does
@@ -263,10 +251,10 @@ void structural_checks(const std::string& name, const Rings& rings, const pma_te
   for(const pma_test::Oracle_edge& e : G.edges) { used.insert(e.a); used.insert(e.b); }
   for(std::size_t r = 0; r < rings.size(); ++r)
     for(std::size_t i = 0; i < rings[r].size(); ++i) {
-      CHECK_MSG(used.count(make_id('e', static_cast<int>(r), static_cast<int>(i))),
+      CHECK(used.count(make_id('e', static_cast<int>(r), static_cast<int>(i))),
                 name + ": edge without a curve");
       const bool reflex = turn_at(rings, static_cast<int>(r), static_cast<int>(i)) < 0;
-      CHECK_MSG(reflex == (used.count(make_id('v', static_cast<int>(r), static_cast<int>(i))) > 0),
+      CHECK(reflex == (used.count(make_id('v', static_cast<int>(r), static_cast<int>(i))) > 0),
                 name + ": vertex " + make_id('v', static_cast<int>(r), static_cast<int>(i)) +
                   (reflex ? " is reflex but owns no curve" : " is not reflex but owns a curve"));
     }
@@ -295,7 +283,7 @@ void structural_checks(const std::string& name, const Rings& rings, const pma_te
       } else {
         numeric = std::hypot(n1.x - n0.x, n1.y - n0.y);
       }
-      CHECK_MSG(std::abs(numeric - e.length) <= 1e-6 * e.length + 1e-9 * D,
+      CHECK(std::abs(numeric - e.length) <= 1e-6 * e.length + 1e-9 * D,
                 name + ": length of " + e.a + "/" + e.b + " " + std::to_string(e.length) +
                   " vs numeric " + std::to_string(numeric));
     }
@@ -321,12 +309,12 @@ void structural_checks(const std::string& name, const Rings& rings, const pma_te
       const double da = distance_to(A, x), db = distance_to(B, x);
       double dmin = std::numeric_limits<double>::max();
       for(const Generator_geometry& g : all_edges) dmin = std::min(dmin, distance_to(g, x));
-      CHECK_MSG(std::abs(da - db) <= tol,
+      CHECK(std::abs(da - db) <= tol,
                 name + ": sample of " + e.a + "/" + e.b + " not equidistant");
-      CHECK_MSG(std::min(da, db) <= dmin + tol,
+      CHECK(std::min(da, db) <= dmin + tol,
                 name + ": a boundary point is closer than " + e.a + "/" + e.b);
       if(dmin > 1e-6 * D)
-        CHECK_MSG(strictly_inside(rings, x), name + ": sample of " + e.a + "/" + e.b + " outside");
+        CHECK(strictly_inside(rings, x), name + ": sample of " + e.a + "/" + e.b + " outside");
     }
   }
 }
@@ -339,7 +327,7 @@ pma_test::Oracle_graph run_oracle(const std::string& name, const Rings& rings)
   try {
     return pma_test::sdg_medial_graph(rings, opt);
   } catch(const std::exception& e) {
-    CHECK_MSG(false, name + ": oracle threw: " + e.what());
+    CHECK(false, name + ": oracle threw: " + e.what());
     return pma_test::Oracle_graph();
   }
 }
@@ -350,9 +338,9 @@ void expect_axis(const std::string& name, const Rings& rings, const std::vector<
   const pma_test::Oracle_graph G = run_oracle(name, rings);
   const pma_test::Oracle_result R = pma_test::oracle_result_from_graph(G);
   const pma_test::Curve_diff diff = pma_test::compare_curves(R.curves, expected, R.bbox_diagonal, 1e-12);
-  CHECK_MSG(diff.ok(), name + ":\n" + diff.report());
+  CHECK(diff.ok(), name + ":\n" + diff.report());
   if(expected_branches != static_cast<std::size_t>(-1))
-    CHECK_MSG(R.branches.size() == expected_branches,
+    CHECK(R.branches.size() == expected_branches,
               name + ": " + std::to_string(R.branches.size()) + " branches");
   structural_checks(name, rings, G);
 }
@@ -395,11 +383,11 @@ void check_branch(const std::string& name, const pma_test::Oracle_result& R,
   const pma_test::Oracle_branch* b = find_branch(R, gens);
   std::string g;
   for(const std::string& s : gens) g += " " + s;
-  CHECK_MSG(b != nullptr, name + ": missing branch" + g);
+  CHECK(b != nullptr, name + ": missing branch" + g);
   if(b) {
-    CHECK_MSG(std::abs(b->x - x) <= 1e-15 * (1 + std::abs(x)) && std::abs(b->y - y) <= 1e-15 * (1 + std::abs(y)),
+    CHECK(std::abs(b->x - x) <= 1e-15 * (1 + std::abs(x)) && std::abs(b->y - y) <= 1e-15 * (1 + std::abs(y)),
               name + ": branch" + g + " misplaced");
-    CHECK_MSG(std::abs(b->r - r) <= 1e-15 * (1 + r), name + ": branch" + g + " radius");
+    CHECK(std::abs(b->r - r) <= 1e-15 * (1 + r), name + ": branch" + g + " radius");
   }
 }
 
@@ -427,7 +415,7 @@ void test_hand_cases()
     check_branch("square", R, {"e0.0", "e0.1", "e0.2", "e0.3"}, 0.5, 0.5, 0.5);
     for(const Oracle_curve& c : R.curves)
       if((c.a == "e0.0" && c.b == "e0.2") || (c.a == "e0.1" && c.b == "e0.3"))
-        CHECK_MSG(c.length == 0, "square: centre curve has positive length");
+        CHECK(c.length == 0, "square: centre curve has positive length");
   }
   // 2 x 1 rectangle: corner bisectors and the middle curve of length 1
   {
@@ -547,10 +535,10 @@ void test_hand_cases()
     const double l = B::parabola_arc_length(0.3, 1.7, -1, 0.2, 3, -0.4, -0.8, 3.1, 2.5, 2.0);
     // endpoints are projected: use the parabola points over the same parameters
     const double n = parabola_length_numeric(0.3, 1.7, -1, 0.2, 3, -0.4, -0.8, 3.1, 2.5, 2.0);
-    CHECK_MSG(std::abs(l - n) <= 1e-9 * n, "parabola length " + std::to_string(l) + " vs " + std::to_string(n));
+    CHECK(std::abs(l - n) <= 1e-9 * n, "parabola length " + std::to_string(l) + " vs " + std::to_string(n));
     const double l2 = B::parabola_arc_length(0, 1e-3, 0, 0, 1, 0, -0.01, 0, 0.02, 0);
     const double n2 = parabola_length_numeric(0, 1e-3, 0, 0, 1, 0, -0.01, 0, 0.02, 0);
-    CHECK_MSG(std::abs(l2 - n2) <= 1e-8 * n2, "thin parabola length");
+    CHECK(std::abs(l2 - n2) <= 1e-8 * n2, "thin parabola length");
   }
 }
 
@@ -580,13 +568,13 @@ void test_compare()
                                        {"e0.0", "e0.2", 0.0}};
   // same, other order, pair written backwards, degenerate curve missing
   const std::vector<Oracle_curve> b = {{"e0.2", "e0.1", 3.0 + 1e-9}, {"e0.0", "e0.1", 1.0}, {"e0.1", "e0.2", 2.0}};
-  CHECK_MSG(compare_curves(a, b, 10.0).ok(), compare_curves(a, b, 10.0).report());
+  CHECK(compare_curves(a, b, 10.0).ok(), compare_curves(a, b, 10.0).report());
   CHECK(compare_curves(b, a, 10.0).ok());
   // multiplicity
   const std::vector<Oracle_curve> c = {{"e0.0", "e0.1", 1.0}, {"e0.1", "e0.2", 2.0}};
   pma_test::Curve_diff d = compare_curves(a, c, 10.0);
   CHECK(!d.ok() && d.only_in_a.size() == 1 && d.only_in_b.empty() && d.length_mismatch.empty());
-  CHECK_MSG(d.only_in_a.size() == 1 && d.only_in_a[0].find("e0.1 e0.2 3") == 0, d.report());
+  CHECK(d.only_in_a.size() == 1 && d.only_in_a[0].find("e0.1 e0.2 3") == 0, d.report());
   // length mismatch
   const std::vector<Oracle_curve> e = {{"e0.0", "e0.1", 1.1}, {"e0.1", "e0.2", 2.0}, {"e0.1", "e0.2", 3.0}};
   d = compare_curves(a, e, 10.0);
@@ -619,7 +607,7 @@ void test_compare()
 bool library_valid(const Rings& rings)
 {
   try {
-    CGAL::PMA2::validate_polygon_rings<K>(rings);
+    CGAL::Progressive_medial_axes::validate_polygon_rings<K>(rings);
     return true;
   } catch(const std::exception&) {
     return false;
@@ -639,9 +627,9 @@ double ring_area2(const Ring& r) // twice the signed area (exact for small integ
 
 void check_polygon(const std::string& name, const Rings& rings, std::size_t max_sampled = 100000)
 {
-  CHECK_MSG(pma_test::is_valid_polygon_with_holes(rings), name + ": not valid (pma_test check)");
-  CHECK_MSG(library_valid(rings), name + ": not valid (validate_polygon_rings)");
-  CHECK_MSG(CGAL::orientation_2(rings[0].begin(), rings[0].end(), K()) == CGAL::COUNTERCLOCKWISE,
+  CHECK(pma_test::is_valid_polygon_with_holes(rings), name + ": not valid (pma_test check)");
+  CHECK(library_valid(rings), name + ": not valid (validate_polygon_rings)");
+  CHECK(CGAL::orientation_2(rings[0].begin(), rings[0].end(), K()) == CGAL::COUNTERCLOCKWISE,
             name + ": outer ring not ccw");
   const pma_test::Oracle_graph G = run_oracle(name, rings);
   if(G.edges.empty()) return;
@@ -680,7 +668,7 @@ void test_generators(int seeds, std::uint64_t base_seed)
     {
       const Ring r = pma_test::random_star_polygon(seed, n);
       CHECK(static_cast<int>(r.size()) == n);
-      CHECK_MSG(pma_test::is_simple_polygon(r), "star " + std::to_string(s));
+      CHECK(pma_test::is_simple_polygon(r), "star " + std::to_string(s));
       check_polygon("star seed " + std::to_string(seed) + " n " + std::to_string(n), Rings(1, r));
     }
     {
@@ -702,8 +690,8 @@ void test_generators(int seeds, std::uint64_t base_seed)
         if(CGAL::collinear(r[(i + r.size() - 1) % r.size()], p, q)) ++flats;
       }
       CHECK(grid && axis);
-      CHECK_MSG(flat || flats == 0, "rectilinear without flat vertices has one");
-      CHECK_MSG(ring_area2(r) == 2.0 * cells, "rectilinear area " + std::to_string(ring_area2(r) / 2) +
+      CHECK(flat || flats == 0, "rectilinear without flat vertices has one");
+      CHECK(ring_area2(r) == 2.0 * cells, "rectilinear area " + std::to_string(ring_area2(r) / 2) +
                                                   " for " + std::to_string(cells) + " cells");
       check_polygon("rectilinear seed " + std::to_string(seed) + " cells " + std::to_string(cells) +
                       (flat ? " flat" : ""),
@@ -774,13 +762,13 @@ void test_data_files()
     const std::string path = std::string(PMA_TEST_DATA) + "/" + f;
     Rings rings;
     try {
-      rings = CGAL::PMA2::read_polygon_file<Point>(path);
+      rings = pma_tool::read_polygon_file<Point>(path);
     } catch(const std::exception& e) {
-      CHECK_MSG(false, path + ": " + e.what());
+      CHECK(false, path + ": " + e.what());
       continue;
     }
     const auto t0 = std::chrono::steady_clock::now();
-    CHECK_MSG(pma_test::is_valid_polygon_with_holes(rings), path);
+    CHECK(pma_test::is_valid_polygon_with_holes(rings), path);
     const pma_test::Oracle_graph G = run_oracle(f, rings);
     const double t = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     std::printf("  %-18s %7zu vertices %7zu curves  oracle+checks %.2f s\n", f, G.stats.sdg_vertices / 2,
@@ -801,12 +789,12 @@ int main(int argc, char** argv)
   test_compare();
   test_invalid_input();
   test_hand_cases();
-  std::printf("hand-derived cases: %d checks, %d failures\n", checks, failures);
+  std::printf("hand-derived cases: %ld checks, %d failures\n", pma_test::checks(), pma_test::failures());
   test_generators(seeds, base_seed);
-  std::printf("generators (%d seeds): %d checks, %d failures (%d snapped polygons not simple, skipped)\n",
-              seeds, checks, failures, skipped_snapped);
+  std::printf("generators (%d seeds): %ld checks, %d failures (%d snapped polygons not simple, skipped)\n",
+              seeds, pma_test::checks(), pma_test::failures(), skipped_snapped);
   test_data_files();
   const double t = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  std::printf("test_oracle_self: %d checks, %d failures, %.1f s\n", checks, failures, t);
-  return failures == 0 ? 0 : 1;
+  std::printf("test_oracle_self: %.1f s\n", t);
+  return pma_test::report("test_oracle_self");
 }

@@ -18,20 +18,13 @@
 #include <iostream>
 #include <sstream>
 #include <string>
+
+#include <pma_test/check.h>
 #include <vector>
 
 namespace {
 
-int failures = 0;
 std::string tool, sdg_pairs, tmp;
-
-#define CHECK(cond, msg)                                                                          \
-  do {                                                                                            \
-    if(!(cond)) {                                                                                 \
-      ++failures;                                                                                 \
-      std::cerr << __FILE__ << ":" << __LINE__ << ": check failed: " #cond "\n  " << msg << "\n"; \
-    }                                                                                             \
-  } while(0)
 
 std::string slurp(const std::string& path)
 {
@@ -211,6 +204,5 @@ int main(int argc, char** argv)
   outputs(data);
 
   std::system((std::string("rm -rf ") + tmp).c_str());
-  std::cout << "test_tool: " << failures << " failures\n";
-  return failures == 0 ? 0 : 1;
+  return pma_test::report("test_tool");
 }

@@ -24,14 +24,14 @@ decisions (`Has_exact_decisions`), the topology is that of the exact medial
 axis.
 
 \cgalHasModel `CGAL::Progressive_medial_axis_traits_2<K>`
-\cgalHasModel `CGAL::Progressive_medial_axis_filtered_traits_2<CK,EK>`
 */
 class ProgressiveMedialAxisTraits_2 {
 public:
   /// \name Types
   /// @{
 
-  /// A model of `Kernel` (its `Point_2` and `Orientation_2` are used).
+  /// A model of `Kernel`: the kernel of the points and of the result,
+  /// `CGAL::Medial_axis_2<Kernel>`.
   typedef unspecified_type Kernel;
   /// Number type of the radii of constructed disks.
   typedef unspecified_type FT;
@@ -70,6 +70,11 @@ public:
   /// the disk tangent to three sites whose cells meet at its centre in this
   /// counter-clockwise order; false if there is none.
   typedef unspecified_type Construct_medial_disk_2;
+  /// A function object: `bool operator()(Site_2 a0, Site_2 a1, Site_2 a2, Site_2 b0, Site_2 b1, Site_2 b2)`:
+  /// whether the disks tangent to `a0, a1, a2` and to `b0, b1, b2` are the
+  /// same disk (two vertices of the axis at one point, where four or more
+  /// generators meet).
+  typedef unspecified_type Equal_medial_disks_2;
 
   /// @}
 
@@ -87,5 +92,6 @@ public:
   Compare_event_time_2 compare_event_time_2_object() const;
   Is_event_in_past_2 is_event_in_past_2_object() const;
   Construct_medial_disk_2 construct_medial_disk_2_object() const;
+  Equal_medial_disks_2 equal_medial_disks_2_object() const;
   /// @}
 };

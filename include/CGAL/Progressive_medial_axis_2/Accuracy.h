@@ -1,12 +1,23 @@
 // Copyright (c) 2026 The Progressive_medial_axis_2 authors.
+// All rights reserved.
+//
+// This file is part of CGAL (www.cgal.org).
+//
+// $URL$
+// $Id$
 // SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+//
+// Author(s)     : The Progressive_medial_axis_2 authors
 //
 // The accuracy measure of Liu et al. (2016, section 6.3):
 // E(x) = 1 - r_min / r_max for a branch point x, where the r_i are the true
-// distances from x to its generators.
+// distances from x to its generators; and its floor, the error of the exact
+// branch points correctly rounded to double.
 
 #ifndef CGAL_PROGRESSIVE_MEDIAL_AXIS_2_ACCURACY_H
 #define CGAL_PROGRESSIVE_MEDIAL_AXIS_2_ACCURACY_H
+
+#include <CGAL/license/Progressive_medial_axis_2.h>
 
 #include <CGAL/Progressive_medial_axis_2/Medial_axis_2.h>
 #include <CGAL/Progressive_medial_axis_2/internal/Medial_constructions.h>
@@ -18,7 +29,7 @@
 #include <vector>
 
 namespace CGAL {
-namespace PMA2 {
+namespace Progressive_medial_axes {
 
 /*!
 \ingroup PkgProgressiveMedialAxis2Ref
@@ -117,11 +128,16 @@ inline Accuracy_statistics accuracy_statistics(const std::vector<double>& e)
   return s;
 }
 
-template <class Medial_axis>
-Accuracy_site accuracy_site(const typename Medial_axis::Generator& g)
+/*!
+\ingroup PkgProgressiveMedialAxis2Ref
+The generator of a cell of `Medial_axis_2<K>` as an `Accuracy_site`.
+*/
+template <class Face_handle>
+Accuracy_site accuracy_site(const Face_handle& g)
 {
-  auto a = Medial_axis::to_xy(g.source()), b = Medial_axis::to_xy(g.target());
-  return Accuracy_site{g.is_point(), a.first, a.second, b.first, b.second};
+  const double ax = CGAL::to_double(g.source().x()), ay = CGAL::to_double(g.source().y());
+  const double bx = CGAL::to_double(g.target().x()), by = CGAL::to_double(g.target().y());
+  return Accuracy_site{g.is_point(), ax, ay, bx, by};
 }
 
 /*!
@@ -130,15 +146,15 @@ E(x) for every branch point of `ma` (vertices where three or more medial
 curves meet), using the branch point as stored and its generators, in the
 order of `ma.vertices()`.
 */
-template <class Traits>
-std::vector<double> branch_point_errors(const Medial_axis_2<Traits>& ma)
+template <class K>
+std::vector<double> branch_point_errors(const Medial_axis_2<K>& ma)
 {
-  typedef Medial_axis_2<Traits> MA;
+  typedef Medial_axis_2<K> MA;
   std::vector<double> out;
   for(const auto& v : ma.vertices()) {
     if(v.kind() != MA::BRANCH_POINT) continue;
     std::vector<Accuracy_site> g;
-    for(const auto& gen : v.generators()) g.push_back(accuracy_site<MA>(gen));
+    for(const auto& gen : v.generators()) g.push_back(accuracy_site(gen));
     auto p = MA::to_xy(v.point());
     out.push_back(medial_point_error(p.first, p.second, g));
   }
@@ -152,25 +168,23 @@ point of `ma` when x is the exact branch point (the disk tangent to three of
 its generators, computed in 2048-bit interval arithmetic) correctly rounded
 to double.  Same order as `branch_point_errors()`.
 */
-template <class Traits>
-std::vector<double> floor_branch_point_errors(const Medial_axis_2<Traits>& ma)
+template <class K>
+std::vector<double> floor_branch_point_errors(const Medial_axis_2<K>& ma)
 {
-  typedef Medial_axis_2<Traits> MA;
+  typedef Medial_axis_2<K> MA;
   typedef internal::Mpfr_interval I;
   typedef internal::Site<CGAL::Epick::Point_2> Site;
   std::vector<double> out;
   for(const auto& v : ma.vertices()) {
     if(v.kind() != MA::BRANCH_POINT) continue;
-    std::vector<typename MA::Generator> gens = v.generators();
     std::vector<Accuracy_site> g;
-    for(const auto& gen : gens) g.push_back(accuracy_site<MA>(gen));
+    for(const auto& gen : v.generators()) g.push_back(accuracy_site(gen));
     auto p = MA::to_xy(v.point());
     double x = p.first, y = p.second;
     // three consecutive generators around the vertex, counter-clockwise
-    // (Vertex::generators() lists them clockwise)
     Site s[3];
     for(int i = 0; i < 3; ++i) {
-      const Accuracy_site& a = g[2 - i];
+      const Accuracy_site& a = g[i];
       s[i] = a.is_point ? Site::point(CGAL::Epick::Point_2(a.ax, a.ay))
                         : Site::segment(CGAL::Epick::Point_2(a.ax, a.ay), CGAL::Epick::Point_2(a.bx, a.by));
     }
@@ -195,7 +209,7 @@ std::vector<double> floor_branch_point_errors(const Medial_axis_2<Traits>& ma)
   return out;
 }
 
-} // namespace PMA2
+} // namespace Progressive_medial_axes
 } // namespace CGAL
 
 #endif // CGAL_PROGRESSIVE_MEDIAL_AXIS_2_ACCURACY_H

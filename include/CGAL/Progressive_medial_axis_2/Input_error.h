@@ -1,12 +1,23 @@
-// This file is part of the CGAL package Progressive_medial_axis_2.
+// Copyright (c) 2026 The Progressive_medial_axis_2 authors.
+// All rights reserved.
+//
+// This file is part of CGAL (www.cgal.org).
+//
+// $URL$
+// $Id$
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+//
+// Author(s)     : The Progressive_medial_axis_2 authors
 
 #ifndef CGAL_PROGRESSIVE_MEDIAL_AXIS_2_INPUT_ERROR_H
 #define CGAL_PROGRESSIVE_MEDIAL_AXIS_2_INPUT_ERROR_H
 
+#include <CGAL/license/Progressive_medial_axis_2.h>
+
 /// \file Input_error.h
 /// Definitions shared by the input layer of `Progressive_medial_axis_2`: the
 /// exception reporting bad input, and the ring representation of a polygon with holes
-/// used by the readers (`IO/polygon_io.h`) and by the validation
+/// used by the validation
 /// (`validate_polygon.h`).
 
 #include <charconv>
@@ -17,7 +28,7 @@
 #include <vector>
 
 namespace CGAL {
-namespace PMA2 {
+namespace Progressive_medial_axes {
 
 /*!
 \ingroup PkgProgressiveMedialAxis2IO
@@ -92,7 +103,7 @@ inline std::string format_point(double x, double y)
 
 } // namespace internal
 
-} // namespace PMA2
+} // namespace Progressive_medial_axes
 } // namespace CGAL
 
 #endif // CGAL_PROGRESSIVE_MEDIAL_AXIS_2_INPUT_ERROR_H

@@ -1,58 +1,96 @@
 // Copyright (c) 2026 The Progressive_medial_axis_2 authors.
+// All rights reserved.
+//
+// This file is part of CGAL (www.cgal.org).
+//
+// $URL$
+// $Id$
 // SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+//
+// Author(s)     : The Progressive_medial_axis_2 authors
 
 #ifndef CGAL_PROGRESSIVE_MEDIAL_AXIS_2_MEDIAL_AXIS_2_H
 #define CGAL_PROGRESSIVE_MEDIAL_AXIS_2_MEDIAL_AXIS_2_H
 
-#include <CGAL/Progressive_medial_axis_2/internal/Halfedge_structure.h>
+#include <CGAL/license/Progressive_medial_axis_2.h>
+
+#include <CGAL/Progressive_medial_axis_2/internal/Medial_axis_engine.h>
+#include <CGAL/Progressive_medial_axis_2/internal/Curves.h>
 #include <CGAL/number_utils.h>
 #include <CGAL/enum.h>
 
 #include <algorithm>
-#include <cmath>
 #include <cstddef>
+#include <functional>
 #include <iterator>
+#include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
 
-template <class Traits> class Progressive_medial_axis_2;
+template <class Traits_> class Progressive_medial_axis_2;
 
 /*!
 \ingroup PkgProgressiveMedialAxis2Ref
 
-The medial axis of a polygon (possibly with holes), stored as a half-edge
-structure whose faces are the generator cells.  This class is the read-only
-view: vertices (branch points with the radius of their maximal disk,
-terminal points at convex polygon vertices, junctions), medial curves
-(line segments and parabolic arcs, each between two generators) and the
-generators themselves (polygon edges and reflex vertices).
+The medial axis of a polygon (possibly with holes), as the subdivision of the
+shape into the cells of its generators.
 
-It is filled by `Progressive_medial_axis_2` (at every step of a progressive
-computation) or returned by `medial_axis_2()`.
+- A *generator* is a polygon edge or a reflex vertex; its *cell* (a face,
+  `Face_handle`) is the part of the shape closer to it than to any other.
+- The cells are bounded by half-edges (`Halfedge_handle`) of three kinds:
+  *medial curves* (a line segment or a parabolic arc, the trimmed bisector
+  of two generators), *boundary edges* (the generator segment itself, whose
+  opposite half-edge is on the border, outside the shape) and *normals*
+  (the segment that separates the cell of a reflex vertex from the cells of
+  its two edges).
+- Vertices (`Vertex_handle`) are branch points (three or more medial
+  curves, with the radius of their maximal disk), junctions (two curves,
+  where a curve changes generator), terminal points (one curve: a convex
+  polygon vertex, radius 0) and the contour vertices where no curve ends
+  (reflex and flat polygon vertices).  A point where four or more generators
+  meet is one vertex.
 
-\tparam Traits a model of `ProgressiveMedialAxisTraits_2`.
+Handles are light values that stay valid while the axis is not refined
+further (moving the `Medial_axis_2` object keeps them valid); all its const
+member functions may be called from several threads at once.  Navigation
+follows CGAL's half-edge data structures: `h.opposite()`, `h.next()` and
+`h.prev()` walk the cell on the left of `h` counter-clockwise,
+`v.incident_halfedges()` circulates counter-clockwise around a vertex, and
+`f.ccb()` around a cell.
+
+The axis is returned by `CGAL::medial_axis_2()` or read at every step of a
+`Progressive_medial_axis_2`.
+
+\tparam K the kernel of the points (the kernel of the traits that computed it).
 */
-template <class Traits_>
+template <class K>
 class Medial_axis_2
 {
 public:
-  typedef Traits_ Traits;
-  typedef typename Traits::Point_2 Point_2;
-  typedef typename Traits::FT FT;
-  typedef PMA2::internal::Halfedge_structure<Point_2, FT> Hds;
+  typedef K Kernel;
+  typedef typename K::Point_2 Point_2;
+  typedef typename K::FT FT;
 
-  /// Kind of a vertex of the medial axis.
+  /// Kind of a vertex.
   enum Vertex_kind {
     BRANCH_POINT,   ///< three or more medial curves meet
-    TERMINAL_POINT, ///< a convex vertex of the polygon, radius 0
-    JUNCTION_POINT  ///< two curves meet where the generator changes (e.g. line to parabola)
+    TERMINAL_POINT, ///< one medial curve ends: a convex vertex of the polygon, radius 0
+    JUNCTION_POINT, ///< two curves meet where the generator changes (e.g. line to parabola)
+    CONTOUR_POINT   ///< a polygon vertex where no medial curve ends (reflex or flat)
   };
   /// Kind of a medial curve.
   enum Curve_kind {
     LINE_SEGMENT,   ///< bisector of two segments or of two points
     PARABOLIC_ARC   ///< bisector of a point and a segment
+  };
+  /// Kind of a half-edge.
+  enum Halfedge_kind {
+    MEDIAL_CURVE,   ///< a medial curve, between the cells of two generators
+    BOUNDARY_EDGE,  ///< a generator segment, or the opposite half-edge on the border
+    NORMAL_SEGMENT  ///< the segment between a reflex vertex's cell and one of its edges' cells
   };
 
   /// A polygon vertex, named by its ring (0 = outer ring, k = k-th hole)
@@ -60,150 +98,277 @@ public:
   struct Input_vertex {
     int ring = -1;
     int index = -1;
+    friend bool operator==(const Input_vertex& a, const Input_vertex& b) { return a.ring == b.ring && a.index == b.index; }
+    friend bool operator!=(const Input_vertex& a, const Input_vertex& b) { return !(a == b); }
+    friend bool operator<(const Input_vertex& a, const Input_vertex& b)
+    {
+      return a.ring < b.ring || (a.ring == b.ring && a.index < b.index);
+    }
   };
 
-  /// A generator: a polygon edge or a reflex vertex.  During a progressive
-  /// computation a segment generator can also be a diagonal of the
-  /// triangulation that bounds the current shape.
-  class Generator
+private:
+  typedef Progressive_medial_axes::internal::Medial_axis_data<Point_2, FT> Data;
+  typedef typename Data::Hds Hds;
+  static constexpr int NONE = Progressive_medial_axes::internal::NO_INDEX;
+
+public:
+  class Vertex_handle;
+  class Halfedge_handle;
+  class Face_handle;
+
+  /// The cell of a generator: a polygon edge or a reflex vertex.  During a
+  /// progressive computation a segment generator can also be a diagonal of
+  /// the triangulation that bounds the current shape.
+  class Face_handle
   {
   public:
-    Generator() {}
+    Face_handle() {}
+    const Face_handle* operator->() const { return this; }
+    const Face_handle& operator*() const { return *this; }
+    /// false for a default-constructed handle, and for the outside of the shape
+    explicit operator bool() const { return d_ != nullptr && f_ >= 0; }
     /// true for a reflex vertex, false for a segment
-    bool is_point() const { return is_point_; }
+    bool is_point() const { return face().is_point; }
     /// true for a segment that is an edge of the input polygon
-    bool is_input_edge() const { return input_edge_ring_ >= 0; }
-    /// the ring and index of an input edge (edge i goes from vertex i to vertex i+1)
-    int ring() const { return is_point_ ? first_.ring : input_edge_ring_; }
-    int index() const { return is_point_ ? first_.index : input_edge_index_; }
+    bool is_input_edge() const { return input_edge(nullptr, nullptr); }
+    /// the ring and index of an input edge (edge i goes from vertex i to vertex i+1),
+    /// or of the reflex vertex
+    int ring() const
+    {
+      int r = -1, i = -1;
+      if(is_point()) return source_vertex().ring;
+      input_edge(&r, &i);
+      return r;
+    }
+    int index() const
+    {
+      int r = -1, i = -1;
+      if(is_point()) return source_vertex().index;
+      input_edge(&r, &i);
+      return i;
+    }
     /// the point of a reflex vertex; the source of a segment (the shape is on its left)
-    const Point_2& source() const { return *source_; }
+    const Point_2& source() const { return d_->points[face().p0]; }
     /// the target of a segment (equal to source() for a point)
-    const Point_2& target() const { return *target_; }
+    const Point_2& target() const { return d_->points[face().p1]; }
     /// the input vertices of the source and target
-    Input_vertex source_vertex() const { return first_; }
-    Input_vertex target_vertex() const { return second_; }
-    /// the internal index of the generator's cell (stable while the cell lives)
-    int face_index() const { return face_; }
+    Input_vertex source_vertex() const { return input_vertex_of(d_, face().p0); }
+    Input_vertex target_vertex() const { return input_vertex_of(d_, face().p1); }
     /// canonical id as in the package documentation: `e<r>.<i>` or `v<r>.<i>`
     /// (for a diagonal, `d<r>.<i>-<s>.<j>`)
     std::string id() const
     {
-      if(is_point_)
-        return "v" + std::to_string(first_.ring) + "." + std::to_string(first_.index);
-      if(is_input_edge())
-        return "e" + std::to_string(input_edge_ring_) + "." + std::to_string(input_edge_index_);
-      return "d" + std::to_string(first_.ring) + "." + std::to_string(first_.index) + "-" +
-             std::to_string(second_.ring) + "." + std::to_string(second_.index);
+      const Input_vertex a = source_vertex(), b = target_vertex();
+      if(is_point()) return "v" + std::to_string(a.ring) + "." + std::to_string(a.index);
+      int r, i;
+      if(input_edge(&r, &i)) return "e" + std::to_string(r) + "." + std::to_string(i);
+      return "d" + std::to_string(a.ring) + "." + std::to_string(a.index) + "-" + std::to_string(b.ring) + "." +
+             std::to_string(b.index);
     }
+    /// a half-edge of the cell's boundary (counter-clockwise)
+    Halfedge_handle halfedge() const { return Halfedge_handle(d_, first_nonzero(d_, face().halfedge)); }
+    /// the half-edges of the cell's boundary, counter-clockwise
+    std::vector<Halfedge_handle> ccb() const
+    {
+      std::vector<Halfedge_handle> out;
+      const Halfedge_handle h0 = halfedge();
+      Halfedge_handle h = h0;
+      do {
+        out.push_back(h);
+        h = h.next();
+      } while(h != h0);
+      return out;
+    }
+    /// a number that identifies the cell while it lives
+    std::size_t id_number() const { return std::size_t(f_); }
+    friend bool operator==(const Face_handle& a, const Face_handle& b) { return a.d_ == b.d_ && a.f_ == b.f_; }
+    friend bool operator!=(const Face_handle& a, const Face_handle& b) { return !(a == b); }
+    friend bool operator<(const Face_handle& a, const Face_handle& b) { return a.f_ < b.f_; }
 
   private:
-    template <class> friend class Medial_axis_2;
-    bool is_point_ = false;
-    int face_ = -1;
-    int input_edge_ring_ = -1, input_edge_index_ = -1;
-    Input_vertex first_, second_;
-    const Point_2* source_ = nullptr;
-    const Point_2* target_ = nullptr;
+    friend class Medial_axis_2;
+    Face_handle(const Data* d, int f) : d_(d), f_(f) {}
+    const Progressive_medial_axes::internal::Hds_face& face() const { return d_->hds.face(f_); }
+    bool input_edge(int* ring, int* index) const
+    {
+      const auto& x = face();
+      if(x.is_point) return false;
+      const auto& a = d_->info[x.p0];
+      if(a.next != x.p1) return false;
+      if(ring) *ring = a.ring;
+      if(index) *index = a.reversed ? d_->info[x.p1].index : a.index;
+      return true;
+    }
+    const Data* d_ = nullptr;
+    int f_ = -1;
   };
 
-  /// A vertex of the medial axis.
-  class Vertex
+  /// A generator is designated by its cell.
+  typedef Face_handle Generator;
+
+  /// A vertex of the subdivision.
+  class Vertex_handle
   {
   public:
-    Vertex() {}
-    const Point_2& point() const { return ma_->vertex_point(v_); }
-    /// radius of the maximal disk centred here (0 at terminal points)
-    const FT& radius() const { return ma_->vertex_radius(v_); }
+    Vertex_handle() {}
+    const Vertex_handle* operator->() const { return this; }
+    const Vertex_handle& operator*() const { return *this; }
+    explicit operator bool() const { return d_ != nullptr; }
+    const Point_2& point() const { return d_->hds.vertex(v_).point; }
+    /// radius of the maximal disk centred here (0 at polygon vertices)
+    const FT& radius() const { return d_->hds.vertex(v_).radius; }
     Vertex_kind kind() const
     {
-      int m = ma_->medial_degree(v_);
-      return m >= 3 ? BRANCH_POINT : (m == 1 ? TERMINAL_POINT : JUNCTION_POINT);
+      const int m = degree();
+      return m >= 3 ? BRANCH_POINT : (m == 2 ? JUNCTION_POINT : (m == 1 ? TERMINAL_POINT : CONTOUR_POINT));
     }
     /// number of medial curves at this vertex
-    int degree() const { return ma_->medial_degree(v_); }
-    /// the generators whose cells meet here, in counter-clockwise order
-    std::vector<Generator> generators() const
+    int degree() const
     {
-      std::vector<Generator> g;
-      int h0 = ma_->hds_.vertex(v_).halfedge, h = h0;
-      do {
-        int f = ma_->hds_.face_of(h);
-        if(f >= 0) g.push_back(ma_->generator(f));
-        h = Hds::twin(ma_->hds_.next(h));
-      } while(h != h0);
-      return g;
+      int m = 0;
+      for_each_incoming(d_, v_, [&](int h) { if(is_medial(d_, h)) ++m; });
+      return m;
     }
-    /// the polygon vertex, for a terminal point
-    Input_vertex input_vertex() const { return ma_->input_vertex(ma_->hds_.vertex(v_).input_point); }
-    int index() const { return v_; }
-    bool operator==(const Vertex& o) const { return v_ == o.v_; }
-    bool operator!=(const Vertex& o) const { return v_ != o.v_; }
+    /// an incoming half-edge
+    Halfedge_handle halfedge() const { return Halfedge_handle(d_, incoming(d_, v_)); }
+    /// the incoming half-edges, counter-clockwise around the vertex
+    std::vector<Halfedge_handle> incident_halfedges() const
+    {
+      std::vector<Halfedge_handle> out;
+      for_each_incoming(d_, v_, [&](int h) { out.push_back(Halfedge_handle(d_, h)); });
+      return out;
+    }
+    /// the generators whose cells meet here, counter-clockwise
+    std::vector<Face_handle> generators() const
+    {
+      std::vector<Face_handle> out;
+      for_each_incoming(d_, v_, [&](int h) {
+        const int f = d_->hds.face_of(h);
+        if(f >= 0) out.push_back(Face_handle(d_, f));
+      });
+      return out;
+    }
+    /// whether this is a vertex of the polygon (the shape's boundary)
+    bool is_polygon_vertex() const { return d_->hds.vertex(v_).input_point != NONE; }
+    /// the polygon vertex, for a terminal or contour point
+    Input_vertex input_vertex() const { return input_vertex_of(d_, d_->hds.vertex(v_).input_point); }
+    /// a number that identifies the vertex while it lives
+    std::size_t id_number() const { return std::size_t(v_); }
+    friend bool operator==(const Vertex_handle& a, const Vertex_handle& b) { return a.d_ == b.d_ && a.v_ == b.v_; }
+    friend bool operator!=(const Vertex_handle& a, const Vertex_handle& b) { return !(a == b); }
+    friend bool operator<(const Vertex_handle& a, const Vertex_handle& b) { return a.v_ < b.v_; }
 
   private:
-    template <class> friend class Medial_axis_2;
-    Vertex(const Medial_axis_2* ma, int v) : ma_(ma), v_(v) {}
-    const Medial_axis_2* ma_ = nullptr;
+    friend class Medial_axis_2;
+    Vertex_handle(const Data* d, int v) : d_(d), v_(representative(d, v)) {}
+    const Data* d_ = nullptr;
     int v_ = -1;
   };
 
-  /// A medial curve: the trimmed bisector of two generators.
-  class Edge
+  /// A half-edge: a medial curve, a boundary edge or a normal, with the cell
+  /// of `face()` on its left.
+  class Halfedge_handle
   {
   public:
-    Edge() {}
-    Generator first_generator() const { return ma_->generator(ma_->hds_.face_of(h_)); }
-    Generator second_generator() const { return ma_->generator(ma_->hds_.face_of(Hds::twin(h_))); }
-    Vertex source() const { return Vertex(ma_, ma_->hds_.source(h_)); }
-    Vertex target() const { return Vertex(ma_, ma_->hds_.target(h_)); }
-    Curve_kind kind() const
+    Halfedge_handle() {}
+    const Halfedge_handle* operator->() const { return this; }
+    const Halfedge_handle& operator*() const { return *this; }
+    explicit operator bool() const { return d_ != nullptr; }
+    Halfedge_handle opposite() const { return Halfedge_handle(d_, h_ ^ 1); }
+    Halfedge_handle twin() const { return opposite(); }
+    /// the next half-edge of the cell on the left (counter-clockwise)
+    Halfedge_handle next() const { return Halfedge_handle(d_, next_nonzero(d_, h_)); }
+    Halfedge_handle prev() const { return Halfedge_handle(d_, prev_nonzero(d_, h_)); }
+    Vertex_handle source() const { return Vertex_handle(d_, d_->hds.source(h_)); }
+    Vertex_handle target() const { return Vertex_handle(d_, d_->hds.target(h_)); }
+    /// the cell on the left; a null handle on the border (outside the shape)
+    Face_handle face() const { return Face_handle(d_, d_->hds.face_of(h_)); }
+    bool is_border() const { return d_->hds.face_of(h_) < 0; }
+    Halfedge_kind kind() const
     {
-      return ma_->hds_.face(ma_->hds_.face_of(h_)).is_point ==
-                 ma_->hds_.face(ma_->hds_.face_of(Hds::twin(h_))).is_point
-               ? LINE_SEGMENT : PARABOLIC_ARC;
+      const int f = d_->hds.face_of(h_), g = d_->hds.face_of(h_ ^ 1);
+      if(f < 0 || g < 0) return BOUNDARY_EDGE;
+      return is_normal_pair(d_, f, g) ? NORMAL_SEGMENT : MEDIAL_CURVE;
+    }
+    bool is_medial_curve() const { return kind() == MEDIAL_CURVE; }
+    /// the generators on both sides (a medial curve)
+    Face_handle first_generator() const { return face(); }
+    Face_handle second_generator() const { return opposite().face(); }
+    /// line segment or parabolic arc (for a medial curve)
+    Curve_kind curve_kind() const
+    {
+      const int f = d_->hds.face_of(h_), g = d_->hds.face_of(h_ ^ 1);
+      if(f < 0 || g < 0) return LINE_SEGMENT;
+      return d_->hds.face(f).is_point == d_->hds.face(g).is_point ? LINE_SEGMENT : PARABOLIC_ARC;
     }
     /// length of the curve (computed in double)
-    double length() const { return ma_->curve_length(h_); }
+    double length() const { return curve(d_, h_).length(); }
     /// points along the curve from source() to target(), such that the
-    /// polyline is within `tolerance` of the curve
+    /// polyline is within `tolerance` > 0 of the curve
     std::vector<std::pair<double, double> > polyline(double tolerance) const
     {
-      return ma_->curve_polyline(h_, tolerance);
+      return curve(d_, h_).polyline(tolerance);
     }
-    int index() const { return h_; }
+    /// a number that identifies the half-edge while it lives
+    std::size_t id_number() const { return std::size_t(h_); }
+    friend bool operator==(const Halfedge_handle& a, const Halfedge_handle& b) { return a.d_ == b.d_ && a.h_ == b.h_; }
+    friend bool operator!=(const Halfedge_handle& a, const Halfedge_handle& b) { return !(a == b); }
+    friend bool operator<(const Halfedge_handle& a, const Halfedge_handle& b) { return a.h_ < b.h_; }
 
   private:
-    template <class> friend class Medial_axis_2;
-    Edge(const Medial_axis_2* ma, int h) : ma_(ma), h_(h) {}
-    const Medial_axis_2* ma_ = nullptr;
+    friend class Medial_axis_2;
+    Halfedge_handle(const Data* d, int h) : d_(d), h_(h) {}
+    const Data* d_ = nullptr;
     int h_ = -1;
   };
 
-  // Iterators over the live vertices and medial curves.
-  template <class Value, int Step>
-  class Index_iterator
+  /// A medial curve is designated by one of its half-edges.
+  typedef Halfedge_handle Edge;
+  typedef Vertex_handle Vertex;
+
+  // ---- iteration ----
+
+  /// Iterator over the items of one kind (vertices, medial curves, cells).
+  template <class Handle>
+  class Item_iterator
   {
   public:
     typedef std::forward_iterator_tag iterator_category;
-    typedef Value value_type;
+    typedef Handle value_type;
     typedef std::ptrdiff_t difference_type;
-    typedef const Value* pointer;
-    typedef Value reference;
-    Index_iterator() {}
-    Index_iterator(const Medial_axis_2* ma, int i, int end) : ma_(ma), i_(i), end_(end) { skip(); }
-    Value operator*() const { return Value(ma_, i_); }
-    Index_iterator& operator++() { i_ += Step; skip(); return *this; }
-    Index_iterator operator++(int) { Index_iterator t = *this; ++*this; return t; }
-    bool operator==(const Index_iterator& o) const { return i_ == o.i_; }
-    bool operator!=(const Index_iterator& o) const { return i_ != o.i_; }
+    typedef const Handle* pointer;
+    typedef Handle reference;
+    Item_iterator() {}
+    Handle operator*() const { return Handle(d_, i_); }
+    Item_iterator& operator++()
+    {
+      ++i_;
+      skip();
+      return *this;
+    }
+    Item_iterator operator++(int)
+    {
+      Item_iterator t = *this;
+      ++*this;
+      return t;
+    }
+    bool operator==(const Item_iterator& o) const { return i_ == o.i_; }
+    bool operator!=(const Item_iterator& o) const { return i_ != o.i_; }
 
   private:
-    void skip() { while(i_ < end_ && !ma_->keep_index(i_, Step == 2)) i_ += Step; }
-    const Medial_axis_2* ma_ = nullptr;
+    friend class Medial_axis_2;
+    Item_iterator(const Data* d, int i, int end, bool (*keep)(const Data*, int)) : d_(d), i_(i), end_(end), keep_(keep)
+    {
+      skip();
+    }
+    void skip()
+    {
+      while(i_ < end_ && !keep_(d_, i_)) ++i_;
+    }
+    const Data* d_ = nullptr;
     int i_ = 0, end_ = 0;
+    bool (*keep_)(const Data*, int) = nullptr;
   };
-  typedef Index_iterator<Vertex, 1> Vertex_iterator;
-  typedef Index_iterator<Edge, 2> Edge_iterator;
 
   template <class It>
   struct Range {
@@ -212,172 +377,75 @@ public:
     It end() const { return e; }
   };
 
-  Vertex_iterator vertices_begin() const { return Vertex_iterator(this, 0, int(hds_.vertex_capacity())); }
-  Vertex_iterator vertices_end() const { return Vertex_iterator(this, int(hds_.vertex_capacity()), int(hds_.vertex_capacity())); }
-  Edge_iterator edges_begin() const { return Edge_iterator(this, 0, int(hds_.halfedge_capacity())); }
-  Edge_iterator edges_end() const { return Edge_iterator(this, int(hds_.halfedge_capacity()), int(hds_.halfedge_capacity())); }
-  /// All vertices of the medial axis (branch, terminal and junction points).
-  Range<Vertex_iterator> vertices() const { return {vertices_begin(), vertices_end()}; }
-  /// All medial curves.
-  Range<Edge_iterator> edges() const { return {edges_begin(), edges_end()}; }
+  typedef Item_iterator<Vertex_handle> Vertex_iterator;
+  typedef Item_iterator<Halfedge_handle> Edge_iterator;
+  typedef Item_iterator<Face_handle> Face_iterator;
 
-  std::size_t number_of_vertices() const { return std::size_t(std::distance(vertices_begin(), vertices_end())); }
-  std::size_t number_of_edges() const { return std::size_t(std::distance(edges_begin(), edges_end())); }
+  Medial_axis_2() {}
 
-  /// All generators (live cells).
-  std::vector<Generator> generators() const
+  /// The vertices on the medial axis (branch, junction and terminal points).
+  Range<Vertex_iterator> vertices() const { return range<Vertex_handle>(d_ ? int(hds().vertex_capacity()) : 0, &keep_vertex); }
+  /// The medial curves, one half-edge each.
+  Range<Edge_iterator> edges() const { return range<Halfedge_handle>(d_ ? int(hds().halfedge_capacity()) : 0, &keep_edge); }
+  /// The generator cells.
+  Range<Face_iterator> faces() const { return range<Face_handle>(d_ ? int(hds().face_capacity()) : 0, &keep_face); }
+  Range<Face_iterator> generators() const { return faces(); }
+
+  std::size_t number_of_vertices() const { return count(vertices()); }
+  std::size_t number_of_edges() const { return count(edges()); }
+  std::size_t number_of_faces() const { return count(faces()); }
+
+  // ---- the shape and its polygon ----
+
+  /// The point of a polygon vertex.
+  const Point_2& point(const Input_vertex& v) const { return d_->points[d_->ring_start[v.ring] + v.index]; }
+  /// Number of rings of the input polygon (the outer ring and the holes).
+  std::size_t number_of_input_rings() const { return d_ ? d_->ring_start.size() - 1 : 0; }
+  /// Number of vertices of ring r of the input polygon.
+  std::size_t input_ring_size(std::size_t r) const { return std::size_t(d_->ring_start[r + 1] - d_->ring_start[r]); }
+
+  /// The boundary of the shape whose medial axis this is (at a step of a
+  /// progressive computation, the current shape), as polygon vertices: its
+  /// outer boundary counter-clockwise first, then its holes clockwise; each
+  /// ring starts at its vertex of smallest (ring, index), and the holes
+  /// come in the order of that vertex.
+  std::vector<std::vector<Input_vertex> > shape_rings() const
   {
-    std::vector<Generator> g;
-    for(int f = 0; f < int(hds_.face_capacity()); ++f)
-      if(hds_.face(f).alive) g.push_back(generator(f));
-    return g;
-  }
-
-  Generator generator(int f) const
-  {
-    const PMA2::internal::Hds_face& x = hds_.face(f);
-    Generator g;
-    g.is_point_ = x.is_point;
-    g.face_ = f;
-    g.first_ = input_vertex(x.p0);
-    g.second_ = input_vertex(x.p1);
-    g.source_ = &points_[x.p0];
-    g.target_ = &points_[x.p1];
-    if(!x.is_point) {
-      const Point_info& a = info_[x.p0];
-      if(a.next == x.p1) {
-        g.input_edge_ring_ = a.ring;
-        g.input_edge_index_ = a.reversed ? info_[x.p1].index : a.index;
-      }
-    }
-    return g;
-  }
-
-  /// The polygon vertex with internal index `i`.
-  Input_vertex input_vertex(int i) const
-  {
-    Input_vertex r;
-    if(i >= 0) {
-      r.ring = info_[i].ring;
-      r.index = info_[i].index;
-    }
-    return r;
-  }
-
-  /// The boundary of the shape whose medial axis this is: one ring per
-  /// boundary cycle, as internal point indices, the outer ring
-  /// counter-clockwise and holes clockwise.
-  std::vector<std::vector<int> > boundary_cycles() const
-  {
+    if(!d_) return {};
+    const Hds& h = hds();
     std::vector<std::vector<int> > cycles;
-    std::vector<char> seen(hds_.halfedge_capacity(), 0);
-    for(int h = 0; h < int(hds_.halfedge_capacity()); ++h) {
-      if(seen[h] || hds_.face_of(h) != PMA2::internal::OUTSIDE) continue;
-      // the outer side runs clockwise around the shape: reverse it
+    std::vector<char> seen(h.halfedge_capacity(), 0);
+    for(int e = 0; e < int(h.halfedge_capacity()); ++e) {
+      if(seen[e] || h.face_of(e) != Progressive_medial_axes::internal::OUTSIDE) continue;
+      // the border runs clockwise around the shape: reverse it
       std::vector<int> c;
-      int g = h;
+      int g = e;
       do {
         seen[g] = 1;
-        c.push_back(hds_.vertex(hds_.target(g)).input_point);
-        g = hds_.next(g);
-      } while(g != h);
+        c.push_back(h.vertex(h.target(g)).input_point);
+        g = h.next(g);
+      } while(g != e);
       std::reverse(c.begin(), c.end());
+      std::rotate(c.begin(), std::min_element(c.begin(), c.end()), c.end());
       cycles.push_back(c);
     }
-    return cycles;
-  }
-
-  const std::vector<Point_2>& points() const { return points_; }
-
-  /// The rings of the input polygon, as internal point indices in input order.
-  std::vector<std::vector<int> > input_rings() const
-  {
-    std::vector<std::vector<int> > rings;
-    for(int i = 0; i < int(info_.size()); ++i) {
-      if(info_[i].index == 0) rings.emplace_back();
-      rings.back().push_back(i);
+    // The outer boundary holds the smallest point (x, then y): every hole
+    // lies strictly inside it.  This is exact and needs no area.
+    std::size_t outer = 0;
+    for(std::size_t i = 1; i < cycles.size(); ++i)
+      if(lexicographically_smaller(min_point(cycles[i]), min_point(cycles[outer]))) outer = i;
+    if(!cycles.empty()) std::swap(cycles[0], cycles[outer]);
+    std::sort(cycles.begin() + (cycles.empty() ? 0 : 1), cycles.end(),
+              [](const std::vector<int>& x, const std::vector<int>& y) { return x.front() < y.front(); });
+    std::vector<std::vector<Input_vertex> > out;
+    for(const std::vector<int>& c : cycles) {
+      out.emplace_back();
+      for(int i : c) out.back().push_back(input_vertex_of(d_.get(), i));
     }
-    return rings;
-  }
-
-  /// The point and radius of vertex `v` of the half-edge structure
-  /// (computed on first use; not thread-safe).
-  const Point_2& vertex_point(int v) const
-  {
-    resolve(v);
-    return hds_.vertex(v).point;
-  }
-  const FT& vertex_radius(int v) const
-  {
-    resolve(v);
-    return hds_.vertex(v).radius;
-  }
-  const Hds& halfedge_structure() const { return hds_; }
-
-  /// Whether the half-edge's edge is a medial curve (not a boundary edge and
-  /// not the normal that separates a reflex vertex from its own edges).
-  bool is_medial_edge(int h) const
-  {
-    if(h & 1) return false;
-    int f = hds_.face_of(h), g = hds_.face_of(Hds::twin(h));
-    if(f < 0 || g < 0) return false;
-    return !is_normal_pair(f, g);
-  }
-
-  bool keep_index(int i, bool edge) const { return edge ? is_medial_edge(i) : is_medial_vertex(i); }
-
-  bool is_medial_vertex(int v) const
-  {
-    if(!hds_.vertex(v).alive) return false;
-    return medial_degree(v) > 0;
-  }
-
-  int medial_degree(int v) const
-  {
-    int h0 = hds_.vertex(v).halfedge, h = h0, m = 0;
-    do {
-      if(is_medial_edge(h & ~1)) ++m;
-      h = Hds::twin(hds_.next(h));
-    } while(h != h0);
-    return m;
-  }
-
-  double curve_length(int h) const
-  {
-    std::pair<double, double> a = to_xy(vertex_point(hds_.source(h)));
-    std::pair<double, double> b = to_xy(vertex_point(hds_.target(h)));
-    Parabola par;
-    if(!parabola(h, par))
-      return std::hypot(b.first - a.first, b.second - a.second);
-    return std::fabs(par.arc(par.abscissa(b)) - par.arc(par.abscissa(a)));
-  }
-
-  std::vector<std::pair<double, double> > curve_polyline(int h, double tol) const
-  {
-    std::pair<double, double> a = to_xy(vertex_point(hds_.source(h)));
-    std::pair<double, double> b = to_xy(vertex_point(hds_.target(h)));
-    std::vector<std::pair<double, double> > out;
-    Parabola par;
-    if(!parabola(h, par)) {
-      out.push_back(a);
-      out.push_back(b);
-      return out;
-    }
-    double x1 = par.abscissa(a), x2 = par.abscissa(b);
-    // the sagitta of a parabola piece of width w is w^2 / (8 * 2h): choose steps
-    double w = std::fabs(x2 - x1);
-    int n = 1;
-    if(tol > 0 && par.h > 0) {
-      double step = std::sqrt(16.0 * par.h * tol);
-      n = (std::max)(1, (std::min)(10000, int(std::ceil(w / step))));
-    }
-    out.push_back(a);
-    for(int i = 1; i < n; ++i)
-      out.push_back(par.point(x1 + (x2 - x1) * double(i) / double(n)));
-    out.push_back(b);
     return out;
   }
 
+  /// Approximation of a point as doubles.
   static std::pair<double, double> to_xy(const Point_2& p)
   {
     return std::make_pair(CGAL::to_double(p.x()), CGAL::to_double(p.y()));
@@ -386,89 +454,200 @@ public:
 private:
   template <class> friend class Progressive_medial_axis_2;
 
-  struct Point_info {
-    int ring = -1, index = -1;
-    int next = -1;          // next point along the ring with the interior on the left
-    bool reversed = false;  // the ring was given clockwise (for the outer ring)
-  };
+  explicit Medial_axis_2(std::shared_ptr<const Data> d) : d_(std::move(d)) {}
 
-  // Bisector of a focus and a line, in a frame along the line:
-  // foot of the focus at abscissa 0, height h of the focus.
-  struct Parabola {
-    double fx, fy;   // foot of the focus on the line
-    double tx, ty;   // unit direction of the line
-    double nx, ny;   // unit normal towards the focus
-    double h;
-    double abscissa(const std::pair<double, double>& p) const { return (p.first - fx) * tx + (p.second - fy) * ty; }
-    std::pair<double, double> point(double x) const
-    {
-      double y = (x * x + h * h) / (2.0 * h);
-      return std::make_pair(fx + x * tx + y * nx, fy + x * ty + y * ny);
-    }
-    double arc(double x) const
-    {
-      double s = std::sqrt(x * x + h * h);
-      return (x * s + h * h * std::asinh(x / h)) / (2.0 * h);
-    }
-  };
+  const Hds& hds() const { return d_->hds; }
 
-  bool parabola(int h, Parabola& par) const
+  template <class Handle>
+  Range<Item_iterator<Handle> > range(int end, bool (*keep)(const Data*, int)) const
   {
-    int f = hds_.face_of(h), g = hds_.face_of(Hds::twin(h));
-    if(f < 0 || g < 0) return false;
-    const PMA2::internal::Hds_face& F = hds_.face(f);
-    const PMA2::internal::Hds_face& G = hds_.face(g);
-    if(F.is_point == G.is_point) return false;
-    const PMA2::internal::Hds_face& P = F.is_point ? F : G;
-    const PMA2::internal::Hds_face& S = F.is_point ? G : F;
-    std::pair<double, double> p = to_xy(points_[P.p0]);
-    std::pair<double, double> a = to_xy(points_[S.p0]), b = to_xy(points_[S.p1]);
-    double dx = b.first - a.first, dy = b.second - a.second;
-    double len = std::hypot(dx, dy);
-    par.tx = dx / len;
-    par.ty = dy / len;
-    par.nx = -par.ty;
-    par.ny = par.tx;
-    double s = (p.first - a.first) * par.tx + (p.second - a.second) * par.ty;
-    par.fx = a.first + s * par.tx;
-    par.fy = a.second + s * par.ty;
-    par.h = (p.first - a.first) * par.nx + (p.second - a.second) * par.ny;
-    return par.h > 0;
+    if(!d_) return {Item_iterator<Handle>(), Item_iterator<Handle>()};
+    return {Item_iterator<Handle>(d_.get(), 0, end, keep), Item_iterator<Handle>(d_.get(), end, end, keep)};
+  }
+
+  template <class R>
+  static std::size_t count(const R& r)
+  {
+    return std::size_t(std::distance(r.begin(), r.end()));
+  }
+
+  bool lexicographically_smaller(int a, int b) const
+  {
+    const Point_2 &p = d_->points[a], &q = d_->points[b];
+    return p.x() < q.x() || (p.x() == q.x() && p.y() < q.y());
+  }
+  int min_point(const std::vector<int>& c) const
+  {
+    int m = c[0];
+    for(int i : c)
+      if(lexicographically_smaller(i, m)) m = i;
+    return m;
+  }
+
+  // ---- the rules of the view, on the internal structure ----
+
+  static Input_vertex input_vertex_of(const Data* d, int i)
+  {
+    Input_vertex r;
+    if(i >= 0) {
+      r.ring = d->info[i].ring;
+      r.index = d->info[i].index;
+    }
+    return r;
   }
 
   // A point and one of its own edges, or two collinear edges that share an
-  // endpoint (a flat vertex), are separated by a normal line, not a medial curve.
-  bool is_normal_pair(int f, int g) const
+  // endpoint (a flat vertex), are separated by a normal, not a medial curve.
+  static bool is_normal_pair(const Data* d, int f, int g)
   {
-    const PMA2::internal::Hds_face& F = hds_.face(f);
-    const PMA2::internal::Hds_face& G = hds_.face(g);
+    const auto& F = d->hds.face(f);
+    const auto& G = d->hds.face(g);
     if(F.is_point && G.is_point) return false;
     if(F.is_point) return F.p0 == G.p0 || F.p0 == G.p1;
     if(G.is_point) return G.p0 == F.p0 || G.p0 == F.p1;
-    if(F.p1 == G.p0) return is_collinear(F.p0, F.p1, G.p1);
-    if(G.p1 == F.p0) return is_collinear(G.p0, G.p1, F.p1);
+    if(F.p1 == G.p0) return collinear(d, F.p0, F.p1, G.p1);
+    if(G.p1 == F.p0) return collinear(d, G.p0, G.p1, F.p1);
+    return false;
+  }
+  static bool collinear(const Data* d, int a, int b, int c)
+  {
+    return CGAL::orientation(d->points[a], d->points[b], d->points[c]) == COLLINEAR;
+  }
+
+  static bool is_medial(const Data* d, int h)
+  {
+    const int f = d->hds.face_of(h), g = d->hds.face_of(h ^ 1);
+    return f >= 0 && g >= 0 && !d->hds.is_zero_length(h) && !is_normal_pair(d, f, g);
+  }
+
+  // next and prev in a cell, over edges of length zero
+  static int next_nonzero(const Data* d, int h)
+  {
+    int n = d->hds.next(h);
+    while(d->hds.is_zero_length(n) && n != h) n = d->hds.next(n);
+    return n;
+  }
+  static int prev_nonzero(const Data* d, int h)
+  {
+    int p = d->hds.prev(h);
+    while(d->hds.is_zero_length(p) && p != h) p = d->hds.prev(p);
+    return p;
+  }
+  static int first_nonzero(const Data* d, int h) { return d->hds.is_zero_length(h) ? next_nonzero(d, h) : h; }
+
+  // An incoming half-edge, not of length zero, of the point of v (v and
+  // the vertices joined to it by edges of length zero: where six or more
+  // generators meet, a vertex of the point can have only such edges).
+  static int incoming(const Data* d, int v)
+  {
+    if(!touches_zero_length(d, v)) return d->hds.vertex(v).halfedge;
+    int found = d->hds.vertex(v).halfedge;
+    visit_point(d, v, [&](int u) {
+      const int h0 = d->hds.vertex(u).halfedge;
+      int h = h0;
+      do {
+        if(!d->hds.is_zero_length(h)) {
+          found = h;
+          return true;
+        }
+        h = Hds::twin(d->hds.next(h));
+      } while(h != h0);
+      return false;
+    });
+    return found;
+  }
+
+  // Whether an edge of length zero ends at v (rare: where four or more
+  // generators meet).
+  static bool touches_zero_length(const Data* d, int v)
+  {
+    const int h0 = d->hds.vertex(v).halfedge;
+    int h = h0;
+    do {
+      if(d->hds.is_zero_length(h)) return true;
+      h = Hds::twin(d->hds.next(h));
+    } while(h != h0);
     return false;
   }
 
-  void resolve(int v) const
+  // Calls f(u) for v and the vertices joined to it by edges of length zero,
+  // until f returns true.
+  template <class F>
+  static void visit_point(const Data* d, int v, const F& f)
   {
-    auto point_site = [this](int p0, int p1) {
-      return p0 == p1 ? Traits::Site_2::point(points_[p0]) : Traits::Site_2::segment(points_[p0], points_[p1]);
-    };
-    PMA2::internal::resolve_vertex(hds_, v, Traits(), [this, &point_site](int f) {
-      const PMA2::internal::Hds_face& x = hds_.face(f);
-      return point_site(x.p0, x.p1);
-    }, point_site);
+    std::vector<int> stack(1, v), seen(1, v);
+    while(!stack.empty()) {
+      const int u = stack.back();
+      stack.pop_back();
+      if(f(u)) return;
+      const int h0 = d->hds.vertex(u).halfedge;
+      int h = h0;
+      do {
+        if(d->hds.is_zero_length(h)) {
+          const int w = d->hds.source(h);
+          if(std::find(seen.begin(), seen.end(), w) == seen.end()) {
+            seen.push_back(w);
+            stack.push_back(w);
+          }
+        }
+        h = Hds::twin(d->hds.next(h));
+      } while(h != h0);
+    }
   }
 
-  bool is_collinear(int a, int b, int c) const
+  // Calls f(h) for the incoming half-edges of the point of v (v and the
+  // vertices joined to it by edges of length zero), counter-clockwise.
+  template <class F>
+  static void for_each_incoming(const Data* d, int v, const F& f)
   {
-    return Traits().orientation_2_object()(points_[a], points_[b], points_[c]) == COLLINEAR;
+    const int h0 = incoming(d, v);
+    int h = h0;
+    do {
+      f(h);
+      h = prev_nonzero(d, Hds::twin(h));
+    } while(h != h0);
   }
 
-  Hds hds_;
-  std::vector<Point_2> points_;
-  std::vector<Point_info> info_;
+  // The vertex that stands for the point of v: the smallest index among the
+  // vertices joined to v by edges of length zero.
+  static int representative(const Data* d, int v)
+  {
+    if(!touches_zero_length(d, v)) return v;
+    int best = v;
+    visit_point(d, v, [&](int u) {
+      best = (std::min)(best, u);
+      return false;
+    });
+    return best;
+  }
+
+  static bool keep_vertex(const Data* d, int v)
+  {
+    const auto& x = d->hds.vertex(v);
+    if(!x.alive || x.halfedge == NONE || representative(d, v) != v) return false;
+    bool medial = false;
+    for_each_incoming(d, v, [&](int h) { medial = medial || is_medial(d, h); });
+    return medial;
+  }
+  static bool keep_edge(const Data* d, int h) { return (h & 1) == 0 && !d->hds.is_deleted(h) && is_medial(d, h); }
+  static bool keep_face(const Data* d, int f) { return d->hds.face(f).alive; }
+
+  static Progressive_medial_axes::internal::Curve curve(const Data* d, int h)
+  {
+    const auto& hds = d->hds;
+    Progressive_medial_axes::internal::Curve c;
+    c.a = to_xy(hds.vertex(hds.source(h)).point);
+    c.b = to_xy(hds.vertex(hds.target(h)).point);
+    const int f = hds.face_of(h), g = hds.face_of(h ^ 1);
+    if(f >= 0 && g >= 0 && hds.face(f).is_point != hds.face(g).is_point) {
+      const auto& P = hds.face(f).is_point ? hds.face(f) : hds.face(g);
+      const auto& S = hds.face(f).is_point ? hds.face(g) : hds.face(f);
+      c.set_parabola(to_xy(d->points[P.p0]), to_xy(d->points[S.p0]), to_xy(d->points[S.p1]));
+    }
+    return c;
+  }
+
+  std::shared_ptr<const Data> d_;
 };
 
 } // namespace CGAL

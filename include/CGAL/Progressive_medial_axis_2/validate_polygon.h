@@ -1,12 +1,26 @@
-// This file is part of the CGAL package Progressive_medial_axis_2.
+// Copyright (c) 2026 The Progressive_medial_axis_2 authors.
+// All rights reserved.
+//
+// This file is part of CGAL (www.cgal.org).
+//
+// $URL$
+// $Id$
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+//
+// Author(s)     : The Progressive_medial_axis_2 authors
 
 #ifndef CGAL_PROGRESSIVE_MEDIAL_AXIS_2_VALIDATE_POLYGON_H
 #define CGAL_PROGRESSIVE_MEDIAL_AXIS_2_VALIDATE_POLYGON_H
+
+#include <CGAL/license/Progressive_medial_axis_2.h>
 
 /// \file validate_polygon.h
 /// Geometric validation of a polygon with holes given as rings.
 
 #include <CGAL/Progressive_medial_axis_2/Input_error.h>
+#include <CGAL/Progressive_medial_axis_2/internal/Input_conversion.h>
+
+#include <CGAL/Kernel_traits.h>
 
 #include <CGAL/enum.h>
 #include <CGAL/number_utils.h>
@@ -16,11 +30,12 @@
 #include <iterator>
 #include <set>
 #include <string>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
 namespace CGAL {
-namespace PMA2 {
+namespace Progressive_medial_axes {
 namespace internal {
 
 /*
@@ -537,7 +552,34 @@ void validate_polygon_rings(const Rings<typename Kernel::Point_2>& rings)
   validator.run();
 }
 
-} // namespace PMA2
+/*!
+\ingroup PkgProgressiveMedialAxis2Ref
+
+Checks that `rings` (the outer ring, then the holes, each a vector of points
+of a \cgal kernel) describe a valid polygon with holes, as
+`validate_polygon_rings()` does, with exact predicates (those of `Epick` for
+a kernel of doubles).  Throws `Input_error` naming the problem, its ring and
+vertex.  This is the check the constructors of `Progressive_medial_axis_2`
+run unless told `TRUST_INPUT`.
+*/
+template <class Point_2>
+void validate_polygon(const Rings<Point_2>& rings)
+{
+  typedef typename Kernel_traits<Point_2>::Kernel K;
+  typedef internal::Exact_predicates_kernel_for<K> EK;
+  if constexpr(std::is_same<typename EK::type, K>::value) {
+    validate_polygon_rings<K>(rings);
+  } else {
+    Rings<typename EK::type::Point_2> converted;
+    for(const auto& r : rings) {
+      converted.emplace_back();
+      for(const auto& p : r) converted.back().push_back(EK::point(p));
+    }
+    validate_polygon_rings<typename EK::type>(converted);
+  }
+}
+
+} // namespace Progressive_medial_axes
 } // namespace CGAL
 
 #endif // CGAL_PROGRESSIVE_MEDIAL_AXIS_2_VALIDATE_POLYGON_H

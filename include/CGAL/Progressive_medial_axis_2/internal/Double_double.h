@@ -1,5 +1,13 @@
 // Copyright (c) 2026 The Progressive_medial_axis_2 authors.
+// All rights reserved.
+//
+// This file is part of CGAL (www.cgal.org).
+//
+// $URL$
+// $Id$
 // SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+//
+// Author(s)     : The Progressive_medial_axis_2 authors
 //
 // Double-double arithmetic (an unevaluated sum of two doubles, about 106
 // bits): the fast, non-certified stage used by the filtered traits to
@@ -12,7 +20,7 @@
 #include <cmath>
 
 namespace CGAL {
-namespace PMA2 {
+namespace Progressive_medial_axes {
 namespace internal {
 
 class Double_double
@@ -99,7 +107,7 @@ private:
 };
 
 } // namespace internal
-} // namespace PMA2
+} // namespace Progressive_medial_axes
 } // namespace CGAL
 
 #endif // CGAL_PROGRESSIVE_MEDIAL_AXIS_2_INTERNAL_DOUBLE_DOUBLE_H

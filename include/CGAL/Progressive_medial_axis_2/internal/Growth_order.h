@@ -1,5 +1,13 @@
 // Copyright (c) 2026 The Progressive_medial_axis_2 authors.
+// All rights reserved.
+//
+// This file is part of CGAL (www.cgal.org).
+//
+// $URL$
+// $Id$
 // SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+//
+// Author(s)     : The Progressive_medial_axis_2 authors
 //
 // The order in which region growing adds the triangles, grouped into steps.
 //
@@ -33,7 +41,7 @@
 #include <vector>
 
 namespace CGAL {
-namespace PMA2 {
+namespace Progressive_medial_axes {
 namespace internal {
 
 class Growth_order
@@ -149,7 +157,7 @@ private:
 };
 
 } // namespace internal
-} // namespace PMA2
+} // namespace Progressive_medial_axes
 } // namespace CGAL
 
 #endif // CGAL_PROGRESSIVE_MEDIAL_AXIS_2_INTERNAL_GROWTH_ORDER_H

@@ -1,5 +1,13 @@
 // Copyright (c) 2026 The Progressive_medial_axis_2 authors.
+// All rights reserved.
+//
+// This file is part of CGAL (www.cgal.org).
+//
+// $URL$
+// $Id$
 // SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+//
+// Author(s)     : The Progressive_medial_axis_2 authors
 //
 // The half-edge structure that stores a medial axis: faces are generator
 // cells, edges are medial curves, normals at reflex vertices and boundary
@@ -12,10 +20,11 @@
 #include <CGAL/assertions.h>
 
 #include <cstddef>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
-namespace PMA2 {
+namespace Progressive_medial_axes {
 namespace internal {
 
 constexpr int NO_INDEX = -1;
@@ -42,12 +51,12 @@ struct Hds_halfedge {
 
 template <class Point_2, class FT>
 struct Hds_vertex {
-  // Coordinates and radius are computed on first use (see
+  // Coordinates and radius are computed when they are needed (see
   // resolve_vertex()): most vertices of a progressive run are removed again
   // before anyone looks at them.
-  mutable Point_2 point;
-  mutable FT radius = FT(0);
-  mutable bool pending = false;
+  Point_2 point;
+  FT radius = FT(0);
+  bool pending = false;
   // the generators that define a pending vertex, counter-clockwise: input
   // point indices (p0, p1), with p0 == p1 for a point generator
   int triple[3][2] = {{NO_INDEX, NO_INDEX}, {NO_INDEX, NO_INDEX}, {NO_INDEX, NO_INDEX}};
@@ -66,11 +75,12 @@ public:
 
   static int twin(int h) { return h ^ 1; }
 
-  Halfedge& he(int h) { return halfedges_[h]; }
+  // Non-const access is a (possible) change: recorded when journaling.
+  Halfedge& he(int h) { record(log_he_, halfedges_, h, saved_.he); return halfedges_[h]; }
   const Halfedge& he(int h) const { return halfedges_[h]; }
-  Vertex& vertex(int v) { return vertices_[v]; }
+  Vertex& vertex(int v) { record(log_v_, vertices_, v, saved_.v); return vertices_[v]; }
   const Vertex& vertex(int v) const { return vertices_[v]; }
-  Face& face(int f) { return faces_[f]; }
+  Face& face(int f) { record(log_f_, faces_, f, saved_.f); return faces_[f]; }
   const Face& face(int f) const { return faces_[f]; }
 
   int next(int h) const { return halfedges_[h].next; }
@@ -78,19 +88,28 @@ public:
   int target(int h) const { return halfedges_[h].vertex; }
   int source(int h) const { return halfedges_[twin(h)].vertex; }
   int face_of(int h) const { return halfedges_[h].face; }
-  bool is_alive_halfedge(int h) const { return halfedges_[h].face != DELETED; }
+  bool is_deleted(int h) const { return halfedges_[h].face == DELETED; }
+
+  /// Whether the edge of `h` has length zero: its two end vertices are one
+  /// point, where four or more generators meet (set by the merge, which
+  /// knows it exactly: the edge was opened and closed at equal event times).
+  bool is_zero_length(int h) const { return zero_length_[h >> 1] != 0; }
+  void set_zero_length(int h, bool z)
+  {
+    record(log_zero_, zero_length_, h >> 1, saved_.he / 2);
+    zero_length_[h >> 1] = z ? 1 : 0;
+  }
 
   std::size_t halfedge_capacity() const { return halfedges_.size(); }
   std::size_t vertex_capacity() const { return vertices_.size(); }
   std::size_t face_capacity() const { return faces_.size(); }
   std::size_t number_of_vertices() const { return vertices_.size() - free_vertices_.size(); }
   std::size_t number_of_faces() const { return faces_.size() - free_faces_.size(); }
-  std::size_t number_of_halfedges() const { return halfedges_.size() - 2 * free_edges_.size(); }
 
   void link(int h, int n)
   {
-    halfedges_[h].next = n;
-    halfedges_[n].prev = h;
+    he(h).next = n;
+    he(n).prev = h;
   }
 
   /// A new edge; returns the even half-edge of the pair.  Faces and
@@ -99,16 +118,17 @@ public:
   {
     int h;
     if(!free_edges_.empty()) {
-      h = free_edges_.back();
-      free_edges_.pop_back();
-      halfedges_[h] = Halfedge();
-      halfedges_[h + 1] = Halfedge();
+      h = pop(free_edges_, FREE_EDGES);
+      he(h) = Halfedge();
+      he(h + 1) = Halfedge();
     } else {
       h = int(halfedges_.size());
       halfedges_.resize(halfedges_.size() + 2);
+      zero_length_.push_back(0);
     }
-    halfedges_[h].face = left_face;
-    halfedges_[h + 1].face = right_face;
+    set_zero_length(h, false);
+    he(h).face = left_face;
+    he(h + 1).face = right_face;
     return h;
   }
 
@@ -116,22 +136,21 @@ public:
   {
     int e = h & ~1;
     CGAL_assertion(halfedges_[e].face != DELETED);
-    halfedges_[e].face = DELETED;
-    halfedges_[e + 1].face = DELETED;
-    free_edges_.push_back(e);
+    he(e).face = DELETED;
+    he(e + 1).face = DELETED;
+    push(free_edges_, FREE_EDGES, e);
   }
 
   int new_vertex(const Point_2& p, const FT& r, int input_point = NO_INDEX)
   {
     int v;
     if(!free_vertices_.empty()) {
-      v = free_vertices_.back();
-      free_vertices_.pop_back();
+      v = pop(free_vertices_, FREE_VERTICES);
     } else {
       v = int(vertices_.size());
       vertices_.emplace_back();
     }
-    Vertex& x = vertices_[v];
+    Vertex& x = vertex(v);
     x.point = p;
     x.radius = r;
     x.pending = false;
@@ -147,8 +166,9 @@ public:
   int new_pending_vertex(int a, int b, int c)
   {
     int v = new_vertex(Point_2(), FT(0));
-    Vertex& x = vertices_[v];
+    Vertex& x = vertex(v);
     x.pending = true;
+    pending_.push_back(v);
     const int f[3] = {a, b, c};
     for(int i = 0; i < 3; ++i) {
       x.triple[i][0] = faces_[f[i]].p0;
@@ -160,21 +180,20 @@ public:
   void delete_vertex(int v)
   {
     CGAL_assertion(vertices_[v].alive);
-    vertices_[v].alive = false;
-    free_vertices_.push_back(v);
+    vertex(v).alive = false;
+    push(free_vertices_, FREE_VERTICES, v);
   }
 
   int new_face(bool is_point, int p0, int p1)
   {
     int f;
     if(!free_faces_.empty()) {
-      f = free_faces_.back();
-      free_faces_.pop_back();
+      f = pop(free_faces_, FREE_FACES);
     } else {
       f = int(faces_.size());
       faces_.emplace_back();
     }
-    Face& x = faces_[f];
+    Face& x = face(f);
     x.halfedge = NO_INDEX;
     x.is_point = is_point;
     x.p0 = p0;
@@ -186,27 +205,15 @@ public:
   void delete_face(int f)
   {
     CGAL_assertion(faces_[f].alive);
-    faces_[f].alive = false;
-    free_faces_.push_back(f);
-  }
-
-  /// Number of edges at vertex `v` (walks around it).
-  int degree(int v) const
-  {
-    int h0 = vertices_[v].halfedge;
-    int h = h0, d = 0;
-    do {
-      ++d;
-      h = twin(next(h));
-    } while(h != h0 && d < 1000000);
-    return d;
+    face(f).alive = false;
+    push(free_faces_, FREE_FACES, f);
   }
 
   /// Removes a vertex of degree two that is not a polygon vertex: its two
   /// edges separate the same two cells and become one edge.
   bool remove_degree_two_vertex(int v)
   {
-    Vertex& x = vertices_[v];
+    const Vertex& x = vertices_[v];
     if(!x.alive || x.input_point != NO_INDEX)
       return false;
     int h1 = x.halfedge;          // arrives at v
@@ -215,17 +222,81 @@ public:
       return false;
     int t1 = twin(h1), t2 = twin(h2);
     int w = target(h2);
-    halfedges_[h1].vertex = w;
+    set_zero_length(h1, is_zero_length(h1) && is_zero_length(h2));
+    he(h1).vertex = w;
     link(h1, next(h2));
     link(prev(t2), t1);
     if(vertices_[w].halfedge == h2)
-      vertices_[w].halfedge = h1;
+      vertex(w).halfedge = h1;
     int f = face_of(h2), g = face_of(t2);
-    if(f >= 0 && faces_[f].halfedge == h2) faces_[f].halfedge = h1;
-    if(g >= 0 && faces_[g].halfedge == t2) faces_[g].halfedge = t1;
+    if(f >= 0 && faces_[f].halfedge == h2) face(f).halfedge = h1;
+    if(g >= 0 && faces_[g].halfedge == t2) face(g).halfedge = t1;
     delete_edge(h2);
     delete_vertex(v);
     return true;
+  }
+
+  // ---- the journal ----
+  // Between begin_journal() and end_journal() every change is recorded, so
+  // that rollback() can restore the structure as it was at begin_journal():
+  // the double-precision model redoes with exact decisions a merge that met
+  // an anomaly.
+
+  void begin_journal()
+  {
+    journal_ = true;
+    saved_ = Sizes{halfedges_.size(), vertices_.size(), faces_.size(), pending_.size()};
+  }
+
+  void end_journal()
+  {
+    journal_ = false;
+    saved_ = Sizes();
+    log_he_.clear();
+    log_v_.clear();
+    log_f_.clear();
+    log_zero_.clear();
+    log_free_.clear();
+  }
+
+  /// Restores the structure as it was at begin_journal(); the journal goes on.
+  void rollback()
+  {
+    CGAL_precondition(journal_);
+    for(auto it = log_free_.rbegin(); it != log_free_.rend(); ++it) {
+      std::vector<int>& list = it->list == FREE_EDGES ? free_edges_ : (it->list == FREE_VERTICES ? free_vertices_ : free_faces_);
+      if(it->pushed) list.pop_back();
+      else list.push_back(it->index);
+    }
+    undo(log_he_, halfedges_);
+    undo(log_v_, vertices_);
+    undo(log_f_, faces_);
+    undo(log_zero_, zero_length_);
+    halfedges_.resize(saved_.he);
+    zero_length_.resize(saved_.he / 2);
+    vertices_.resize(saved_.v);
+    faces_.resize(saved_.f);
+    pending_.resize(saved_.pending);
+    log_he_.clear();
+    log_v_.clear();
+    log_f_.clear();
+    log_zero_.clear();
+    log_free_.clear();
+  }
+
+  /// The vertices created pending since begin_journal().
+  std::vector<int> pending_in_journal() const
+  {
+    return std::vector<int>(pending_.begin() + std::ptrdiff_t(saved_.pending), pending_.end());
+  }
+
+  /// The vertices created pending since the last call (some may be dead or
+  /// resolved since).
+  std::vector<int> take_pending()
+  {
+    std::vector<int> p;
+    p.swap(pending_);
+    return p;
   }
 
   void reserve(std::size_t faces, std::size_t vertices)
@@ -233,13 +304,59 @@ public:
     faces_.reserve(faces);
     vertices_.reserve(vertices);
     halfedges_.reserve(6 * faces);
+    zero_length_.reserve(3 * faces);
   }
 
 private:
+  enum Free_list { FREE_EDGES, FREE_VERTICES, FREE_FACES };
+  struct Free_change {
+    Free_list list;
+    bool pushed;
+    int index;
+  };
+  struct Sizes {
+    std::size_t he = 0, v = 0, f = 0, pending = 0;
+  };
+
+  // Records the value of element i of `a` before a change, if it existed
+  // when the journal began (later elements are removed by the rollback).
+  template <class T>
+  void record(std::vector<std::pair<int, T> >& log, const std::vector<T>& a, int i, std::size_t saved)
+  {
+    if(journal_ && std::size_t(i) < saved) log.emplace_back(i, a[i]);
+  }
+  template <class T>
+  static void undo(std::vector<std::pair<int, T> >& log, std::vector<T>& a)
+  {
+    for(auto it = log.rbegin(); it != log.rend(); ++it) a[it->first] = it->second;
+  }
+  int pop(std::vector<int>& list, Free_list which)
+  {
+    const int i = list.back();
+    list.pop_back();
+    if(journal_) log_free_.push_back(Free_change{which, false, i});
+    return i;
+  }
+  void push(std::vector<int>& list, Free_list which, int i)
+  {
+    list.push_back(i);
+    if(journal_) log_free_.push_back(Free_change{which, true, i});
+  }
+
   std::vector<Halfedge> halfedges_;
   std::vector<Vertex> vertices_;
   std::vector<Face> faces_;
+  std::vector<char> zero_length_;   // per edge (half-edge pair)
   std::vector<int> free_edges_, free_vertices_, free_faces_;
+  std::vector<int> pending_;
+
+  bool journal_ = false;
+  Sizes saved_;
+  std::vector<std::pair<int, Halfedge> > log_he_;
+  std::vector<std::pair<int, Vertex> > log_v_;
+  std::vector<std::pair<int, Face> > log_f_;
+  std::vector<std::pair<int, char> > log_zero_;
+  std::vector<Free_change> log_free_;
 };
 
 /// Computes the coordinates and radius of a pending vertex: the disk tangent
@@ -248,10 +365,10 @@ private:
 /// of face f, `point_site(p0, p1)` the site of input points (p0 == p1 for a
 /// point).
 template <class Traits, class Hds, class Site_of, class Point_site>
-void resolve_vertex(const Hds& hds, int v, const Traits& traits, const Site_of& site,
+void resolve_vertex(Hds& hds, int v, const Traits& traits, const Site_of& site,
                     const Point_site& point_site)
 {
-  const typename Hds::Vertex& x = hds.vertex(v);
+  typename Hds::Vertex& x = hds.vertex(v);
   if(!x.pending)
     return;
   bool done = false;
@@ -259,23 +376,26 @@ void resolve_vertex(const Hds& hds, int v, const Traits& traits, const Site_of& 
     done = traits.construct_medial_disk_2_object()(point_site(x.triple[0][0], x.triple[0][1]),
                                                    point_site(x.triple[1][0], x.triple[1][1]),
                                                    point_site(x.triple[2][0], x.triple[2][1]), x.point, x.radius);
-  // the faces around v, clockwise
-  std::vector<int> faces;
-  int h0 = x.halfedge, h = h0;
-  do {
-    faces.push_back(hds.face_of(h));
-    h = Hds::twin(hds.next(h));
-  } while(h != h0 && faces.size() < 64);
-  const std::size_t d = faces.size();
-  for(std::size_t i = 0; i < d && !done; ++i) {
-    int a = faces[(i + 2) % d], b = faces[(i + 1) % d], c = faces[i];
-    if(a < 0 || b < 0 || c < 0) continue;
-    done = traits.construct_medial_disk_2_object()(site(a), site(b), site(c), x.point, x.radius);
+  if(!done) {
+    // the faces around v, clockwise: three consecutive ones
+    std::vector<int> faces;
+    int h0 = x.halfedge, h = h0;
+    do {
+      faces.push_back(hds.face_of(h));
+      h = Hds::twin(hds.next(h));
+    } while(h != h0 && faces.size() < 64);
+    const std::size_t d = faces.size();
+    for(std::size_t i = 0; i < d && !done; ++i) {
+      int a = faces[(i + 2) % d], b = faces[(i + 1) % d], c = faces[i];
+      if(a < 0 || b < 0 || c < 0) continue;
+      done = traits.construct_medial_disk_2_object()(site(a), site(b), site(c), x.point, x.radius);
+    }
   }
   if(!done) {
     // no disk from the generators (only with inexact decisions): take a
     // neighbouring vertex whose position is known
-    h = h0;
+    const int h0 = x.halfedge;
+    int h = h0;
     do {
       const typename Hds::Vertex& y = hds.vertex(hds.source(h));
       if(!y.pending) {
@@ -290,7 +410,7 @@ void resolve_vertex(const Hds& hds, int v, const Traits& traits, const Site_of& 
 }
 
 } // namespace internal
-} // namespace PMA2
+} // namespace Progressive_medial_axes
 } // namespace CGAL
 
 #endif // CGAL_PROGRESSIVE_MEDIAL_AXIS_2_INTERNAL_HALFEDGE_STRUCTURE_H

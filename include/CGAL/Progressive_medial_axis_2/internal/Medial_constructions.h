@@ -1,5 +1,13 @@
 // Copyright (c) 2026 The Progressive_medial_axis_2 authors.
+// All rights reserved.
+//
+// This file is part of CGAL (www.cgal.org).
+//
+// $URL$
+// $Id$
 // SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+//
+// Author(s)     : The Progressive_medial_axis_2 authors
 //
 // Numeric core of the package: the disk tangent to three generators (point
 // and segment sites), written once for any number type with a square root
@@ -15,7 +23,7 @@
 #include <type_traits>
 
 namespace CGAL {
-namespace PMA2 {
+namespace Progressive_medial_axes {
 namespace internal {
 
 /// A generator in number type `NT`: a point `(ax, ay)`, or the open segment
@@ -442,7 +450,7 @@ NT foot_position(const NT& px, const NT& py, const NT& qx, const NT& qy, const C
 }
 
 } // namespace internal
-} // namespace PMA2
+} // namespace Progressive_medial_axes
 } // namespace CGAL
 
 #endif // CGAL_PROGRESSIVE_MEDIAL_AXIS_2_INTERNAL_MEDIAL_CONSTRUCTIONS_H

@@ -1,5 +1,13 @@
 // Copyright (c) 2026 The Progressive_medial_axis_2 authors.
+// All rights reserved.
+//
+// This file is part of CGAL (www.cgal.org).
+//
+// $URL$
+// $Id$
 // SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+//
+// Author(s)     : The Progressive_medial_axis_2 authors
 //
 // The topology-oriented merge of two medial axes along a shared segment
 // (Liu et al. 2016, Algorithms 1-5).
@@ -37,6 +45,21 @@
 // "augmented domain" (a two-sheet cover of a maximal disk); this design does
 // without it, and is tested against the oracle on shapes with 1 to 10^3 holes.
 //
+// Zero-length edges.  When four or more generators meet at one point, events
+// happen at equal times and the merge leaves edges of length zero between
+// vertices that are one point.  An open edge is traced by a corner of the
+// tip's cell, which moves whenever the tip does (it stays equidistant from
+// the tip), so an edge has length zero exactly when it is closed at the time
+// it was opened: the merge records that, with the exact comparison of the
+// two times, and the view contracts such edges (a degree-4 point is one
+// vertex).  This holds while the tip moves strictly between P and Q.  At
+// P, when P becomes reflex, the tip and the new point generator of P are one
+// point and do not fix the corners; at Q, the tip's cell shrinks to the
+// corner Q (convex) or becomes the cell of Q (reflex), and the events at or
+// beyond that time are the last of that collapse.  There, an edge opened and
+// closed at one time has length zero only when its two vertices are the same
+// disk, which the traits decide exactly.
+//
 // Orientation conventions: every face cycle is counter-clockwise (face on
 // the left).  An open edge between consecutive nodes A, B of L is stored as
 // the half-edge of A, from its start vertex to its (future) end vertex.
@@ -44,6 +67,7 @@
 #ifndef CGAL_PROGRESSIVE_MEDIAL_AXIS_2_INTERNAL_MERGE_H
 #define CGAL_PROGRESSIVE_MEDIAL_AXIS_2_INTERNAL_MERGE_H
 
+#include <CGAL/Progressive_medial_axis_2/Merge_statistics.h>
 #include <CGAL/Progressive_medial_axis_2/internal/Halfedge_structure.h>
 #include <CGAL/assertions.h>
 #include <CGAL/enum.h>
@@ -60,15 +84,25 @@
 #endif
 
 namespace CGAL {
-namespace PMA2 {
+namespace Progressive_medial_axes {
+
 namespace internal {
 
-/// What one merge did.
-struct Merge_statistics {
-  std::size_t switches = 0;
-  std::size_t vanishings = 0;
-  std::size_t max_queue = 0;        // n_v: largest number of live vanishing candidates
-  std::size_t anomalies = 0;        // events forced to keep the topology valid
+/// Thrown by a merge in strict mode at its first anomaly: an event that no
+/// exact computation meets (a generator that should have left the list, a
+/// switch that does not match the list).  Only inexact decisions lead there.
+struct Merge_anomaly {};
+
+/// Thrown by the double-precision traits when a decision is too close to
+/// call (a near tie, an implausible circle): the merge is then redone with
+/// exact decisions.
+struct Uncertain_decision {};
+
+/// A merge visitor that does nothing; a visitor has on_switch() and
+/// on_vanish(), called at every switch and vanishing point of a merge.
+struct Null_merge_visitor {
+  void on_switch() {}
+  void on_vanish() {}
 };
 
 template <class Traits>
@@ -86,10 +120,23 @@ public:
       compare_(traits.compare_event_time_2_object())
   {}
 
+  /// The vertices of the two cells of the last merge's separator that are
+  /// still alive: their incident cells changed.
+  template <class F>
+  void for_each_switch_vertex(const F& f) const
+  {
+    for(int w : switch_vertex_plus_) if(chds().vertex(w).alive) f(w);
+    for(int w : switch_vertex_minus_) if(chds().vertex(w).alive) f(w);
+  }
+
+  /// In strict mode a merge throws Merge_anomaly at its first anomaly,
+  /// instead of forcing events to keep the topology valid.
+  void set_strict(bool strict) { strict_ = strict; }
+
   /// Site of a face.
   Site_2 site(int f) const
   {
-    const Hds_face& x = hds_.face(f);
+    const Hds_face& x = chds().face(f);
     return x.is_point ? Site_2::point(points_[x.p0])
                       : Site_2::segment(points_[x.p0], points_[x.p1]);
   }
@@ -100,6 +147,13 @@ public:
   /// two cells and the separator disappear; the medial axis of the union is
   /// left in the structure.
   Merge_statistics merge(int hp, int hm)
+  {
+    Null_merge_visitor v;
+    return merge(hp, hm, v);
+  }
+
+  template <class Visitor>
+  Merge_statistics merge(int hp, int hm, Visitor& visitor)
   {
     stats_ = Merge_statistics();
     Cp_ = hds_.face_of(hp);
@@ -112,8 +166,8 @@ public:
     unify_corners(hds_.target(hm), vP_);
     unify_corners(hds_.source(hm), vQ_);
     CGAL_precondition(hds_.source(hm) == vQ_ && hds_.target(hm) == vP_);
-    P_ = hds_.vertex(vP_).input_point;
-    Q_ = hds_.vertex(vQ_).input_point;
+    P_ = chds().vertex(vP_).input_point;
+    Q_ = chds().vertex(vQ_).input_point;
     line_ = Site_2::segment(points_[P_], points_[Q_]);
     site_p_ = site(Cp_);
     site_m_ = site(Cm_);
@@ -139,13 +193,15 @@ public:
     heap_.clear();
     live_events_ = 0;
     CGAL_PMA2_TRACE_MSG("merge P=" << P_ << " Q=" << Q_ << " turns " << int(turn_P) << " " << int(turn_Q));
-    nodes_.push_back(Node{Cp_, NO_INDEX, 1, NO_INDEX, NO_INDEX});
-    nodes_.push_back(Node{Cm_, 0, NO_INDEX, NO_INDEX, NO_INDEX});
-    now_ = traits_.compute_start_time_2_object()(line_);
+    start_ = traits_.compute_start_time_2_object()(line_);
+    end_ = traits_.compute_end_time_2_object()(line_);
+    now_ = start_;
+    nodes_.push_back(Node{Cp_, NO_INDEX, 1, NO_INDEX, NO_INDEX, now_});
+    nodes_.push_back(Node{Cm_, 0, NO_INDEX, NO_INDEX, NO_INDEX, now_});
 
     initialize(turn_P);
     collect_switches();
-    run_events(turn_Q == RIGHT_TURN);
+    run_events(turn_Q == RIGHT_TURN, visitor);
     if(turn_Q == RIGHT_TURN)
       terminate_reflex();
     else
@@ -156,7 +212,6 @@ public:
     const int before_Q = hds_.prev(o_plus), after_Q = hds_.next(o_minus);
     hds_.link(before_P, after_P);
     hds_.link(before_Q, after_Q);
-    outer_hint_ = after_P;
 
     // Delete the cells of C+ and C-.
     for(int h : plus_) hds_.delete_edge(h);
@@ -172,15 +227,13 @@ public:
     return stats_;
   }
 
-  /// A live outer half-edge after the last merge.
-  int outer_hint() const { return outer_hint_; }
-
 private:
   struct Node {
     int face;
     int prev, next;
     int right_he;   // open edge to the next node: half-edge of this face, start -> end
     int event;      // current vanishing candidate
+    Time opened;    // when right_he was opened
   };
   struct Event {
     Time time;
@@ -194,12 +247,17 @@ private:
     Time time;
   };
 
-  int input_of(int v) const { return hds_.vertex(v).input_point; }
+  int input_of(int v) const { return chds().vertex(v).input_point; }
+  // read-only access (the journal of the double model records writes only)
+  const Hds& chds() const { return hds_; }
 
 #ifdef CGAL_PMA2_TRACE
   template <class T>
-  static auto approx(const T& t) -> decltype(t.to_double()) { return t.to_double(); }
-  static double approx(const double& t) { return t; }
+  static auto approx_impl(const T& t, int) -> decltype(t.to_double()) { return t.to_double(); }
+  template <class T>
+  static double approx_impl(const T& t, long) { return CGAL::to_double(t); }
+  template <class T>
+  static double approx(const T& t) { return approx_impl(t, 0); }
   std::string list_string() const
   {
     std::string out;
@@ -217,7 +275,7 @@ private:
     resolve_vertex(hds_, v, traits_, [this](int f) { return site(f); },
                    [this](int p0, int p1) { return p0 == p1 ? Site_2::point(points_[p0])
                                                             : Site_2::segment(points_[p0], points_[p1]); });
-    return hds_.vertex(v).point;
+    return chds().vertex(v).point;
   }
 
   // Moves every half-edge of vertex `from` to vertex `to` (two corners of one
@@ -226,8 +284,8 @@ private:
   {
     if(from == to)
       return;
-    CGAL_assertion(hds_.vertex(from).input_point == hds_.vertex(to).input_point);
-    const int h0 = hds_.vertex(from).halfedge;
+    CGAL_assertion(chds().vertex(from).input_point == chds().vertex(to).input_point);
+    const int h0 = chds().vertex(from).halfedge;
     int h = h0;
     do {
       CGAL_assertion(hds_.target(h) == from);
@@ -239,7 +297,7 @@ private:
 
   bool is_point_at(int f, int point) const
   {
-    const Hds_face& x = hds_.face(f);
+    const Hds_face& x = chds().face(f);
     return x.is_point && x.p0 == point;
   }
 
@@ -249,7 +307,7 @@ private:
   {
     int id = int(nodes_.size());
     int nx = nodes_[n].next;
-    nodes_.push_back(Node{face, n, nx, NO_INDEX, NO_INDEX});
+    nodes_.push_back(Node{face, n, nx, NO_INDEX, NO_INDEX, now_});
     nodes_[n].next = id;
     nodes_[nx].prev = id;
     return id;
@@ -259,6 +317,34 @@ private:
   {
     nodes_[nodes_[n].prev].next = nodes_[n].next;
     nodes_[nodes_[n].next].prev = nodes_[n].prev;
+  }
+
+  // The open edge of node n ends now, at vertex v (or at time t).
+  void close_edge(int n, int v) { close_edge(n, v, now_); }
+  void close_edge(int n, int v, const Time& t)
+  {
+    const int h = nodes_[n].right_he;
+    hds_.he(h).vertex = v;
+    if(compare_(t, nodes_[n].opened) != EQUAL)
+      return;
+    if(compare_(t, start_) == LARGER && compare_(t, end_) == SMALLER)
+      hds_.set_zero_length(h, true);
+    else if(same_disk(hds_.source(h), v))
+      hds_.set_zero_length(h, true);
+  }
+
+  // Whether two vertices defined by generator triples are one disk.
+  bool same_disk(int v, int w) const
+  {
+    const typename Hds::Vertex &a = chds().vertex(v), &b = chds().vertex(w);
+    if(a.input_point != NO_INDEX || b.input_point != NO_INDEX || a.triple[0][0] == NO_INDEX ||
+       b.triple[0][0] == NO_INDEX)
+      return false;
+    auto site_of = [this](const int p[2]) {
+      return p[0] == p[1] ? Site_2::point(points_[p[0]]) : Site_2::segment(points_[p[0]], points_[p[1]]);
+    };
+    return traits_.equal_medial_disks_2_object()(site_of(a.triple[0]), site_of(a.triple[1]), site_of(a.triple[2]),
+                                                 site_of(b.triple[0]), site_of(b.triple[1]), site_of(b.triple[2]));
   }
 
   // A new edge between `left` and `right`, leaving vertex `start`; its end is set later.
@@ -413,9 +499,10 @@ private:
   }
 
   // ---- the sweep (Algorithm 5) ----
-  void run_events(bool q_reflex)
+  template <class Visitor>
+  void run_events(bool q_reflex, Visitor& visitor)
   {
-    const Time t_end = traits_.compute_end_time_2_object()(line_);
+    const Time& t_end = end_;
     std::size_t ip = 0, im = 0;
     for(;;) {
       int which = -1;
@@ -446,15 +533,18 @@ private:
       if(which == 0) {
         advance_time(sw_plus_[ip].time);
         switch_plus(sw_plus_[ip++]);
+        visitor.on_switch();
       } else if(which == 1) {
         advance_time(sw_minus_[im].time);
         switch_minus(sw_minus_[im++]);
+        visitor.on_switch();
       } else {
         Time t = events_[ev].time;
         int n = events_[ev].node;
         pop_event();
         advance_time(t);
         vanish(n);
+        visitor.on_vanish();
       }
     }
   }
@@ -464,6 +554,7 @@ private:
   {
     ++stats_.switches;
     const int first = nodes_[0].next;
+    if(strict_ && nodes_[first].face != s.gold) throw Merge_anomaly();
     CGAL_assertion(nodes_[first].face == s.gold);
     const int n = insert_after(0, s.gnew);
     const int h = open_edge(s.vertex, s.gnew, s.gold);
@@ -479,6 +570,7 @@ private:
   {
     ++stats_.switches;
     const int last = nodes_[1].prev;
+    if(strict_ && nodes_[last].face != s.gold) throw Merge_anomaly();
     CGAL_assertion(nodes_[last].face == s.gold);
     insert_after(last, s.gnew);
     const int h = open_edge(s.vertex, s.gold, s.gnew);
@@ -486,6 +578,7 @@ private:
     hds_.link(Hds::twin(h), hds_.next(s.te_new));
     hds_.vertex(s.vertex).halfedge = Hds::twin(h);
     nodes_[last].right_he = h;
+    nodes_[last].opened = now_;
     update_candidate(last);
   }
 
@@ -497,16 +590,18 @@ private:
     const int fa = nodes_[a].face, fc = nodes_[c].face;
     const int v = hds_.new_pending_vertex(fa, nodes_[n].face, fc);
     const int AB = nodes_[a].right_he, BC = nodes_[n].right_he;
-    hds_.he(AB).vertex = v;
-    hds_.he(BC).vertex = v;
+    close_edge(a, v);
+    close_edge(n, v);
     const int AC = open_edge(v, fa, fc);
     hds_.link(AB, AC);
     hds_.link(BC, Hds::twin(AB));
     hds_.link(Hds::twin(AC), Hds::twin(BC));
     hds_.vertex(v).halfedge = AB;
     nodes_[a].right_he = AC;
+    nodes_[a].opened = now_;
     invalidate(n);
     unlink_node(n);
+    if(strict_ && nodes_[a].face == nodes_[c].face) throw Merge_anomaly();
     CGAL_assertion(nodes_[a].face != nodes_[c].face);
     update_candidate(a);
     update_candidate(c);
@@ -519,13 +614,14 @@ private:
     // Topologically the list must be [C+, E1_out, E2_in, C-] now.
     while(nodes_[nodes_[0].next].next != nodes_[1].prev &&
           nodes_[0].next != nodes_[1].prev) {
+      if(strict_) throw Merge_anomaly();
       ++stats_.anomalies;
       vanish(nodes_[nodes_[0].next].next);
     }
     const int n1 = nodes_[0].next;
     CGAL_assertion(nodes_[n1].next == nodes_[1].prev && n1 != 1);
     const int h = nodes_[n1].right_he;
-    hds_.he(h).vertex = vQ_;
+    hds_.he(h).vertex = vQ_;   // an edge to the corner Q has length: its start is a disk of positive radius
     const int te_1 = Hds::twin(plus_[0]);
     const int te_k = Hds::twin(minus_.back());
     hds_.link(h, hds_.next(te_1));
@@ -558,7 +654,7 @@ private:
     for(int i = 0; i + 1 < m; ++i) {
       const int o = nodes_[g[i]].right_he;
       const int v = hds_.new_pending_vertex(Qm, nodes_[g[i]].face, nodes_[g[i + 1]].face);
-      hds_.he(o).vertex = v;
+      close_edge(g[i], v, end_);
       hds_.he(ch[i]).vertex = v;
       hds_.he(Hds::twin(ch[i + 1])).vertex = v;
       hds_.link(ch[i], ch[i + 1]);
@@ -607,8 +703,8 @@ private:
   Merge_statistics stats_;
   int Cp_ = NO_INDEX, Cm_ = NO_INDEX, vP_ = NO_INDEX, vQ_ = NO_INDEX, P_ = NO_INDEX, Q_ = NO_INDEX;
   Site_2 line_, site_p_, site_m_;
-  Time now_;
-  int outer_hint_ = NO_INDEX;
+  Time now_, start_, end_;
+  bool strict_ = false;
 
   std::vector<int> plus_, minus_;
   std::vector<int> switch_vertex_plus_, switch_vertex_minus_;
@@ -621,7 +717,7 @@ private:
 };
 
 } // namespace internal
-} // namespace PMA2
+} // namespace Progressive_medial_axes
 } // namespace CGAL
 
 #endif // CGAL_PROGRESSIVE_MEDIAL_AXIS_2_INTERNAL_MERGE_H

@@ -1,5 +1,13 @@
 // Copyright (c) 2026 The Progressive_medial_axis_2 authors.
+// All rights reserved.
+//
+// This file is part of CGAL (www.cgal.org).
+//
+// $URL$
+// $Id$
 // SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+//
+// Author(s)     : The Progressive_medial_axis_2 authors
 //
 // Interval arithmetic on MPFR numbers of a chosen precision: the second
 // stage of the filtered traits, between double intervals and the exact stages.
@@ -12,6 +20,7 @@
 
 #include <CGAL/Uncertain.h>
 #include <CGAL/Interval_nt.h>
+#include <CGAL/Gmpq.h>
 
 #include <mpfr.h>
 
@@ -19,7 +28,7 @@
 #include <utility>
 
 namespace CGAL {
-namespace PMA2 {
+namespace Progressive_medial_axes {
 namespace internal {
 
 class Mpfr_interval
@@ -35,6 +44,7 @@ public:
   Mpfr_interval() { init(); mpfr_set_zero(lo_, 1); mpfr_set_zero(hi_, 1); }
   Mpfr_interval(double d) { init(); mpfr_set_d(lo_, d, MPFR_RNDD); mpfr_set_d(hi_, d, MPFR_RNDU); }
   Mpfr_interval(int i) { init(); mpfr_set_si(lo_, i, MPFR_RNDD); mpfr_set_si(hi_, i, MPFR_RNDU); }
+  explicit Mpfr_interval(const Gmpq& q) { init(); mpfr_set_q(lo_, q.mpq(), MPFR_RNDD); mpfr_set_q(hi_, q.mpq(), MPFR_RNDU); }
   Mpfr_interval(const Mpfr_interval& o)
   {
     init();
@@ -67,7 +77,6 @@ public:
   /// Whether the interval's two ends round to the same double.
   bool rounds_to_one_double() const { return mpfr_get_d(lo_, MPFR_RNDN) == mpfr_get_d(hi_, MPFR_RNDN); }
   Interval_nt<false> to_interval() const { return Interval_nt<false>(inf(), sup()); }
-  bool is_valid() const { return !mpfr_nan_p(lo_) && !mpfr_nan_p(hi_) && mpfr_lessequal_p(lo_, hi_); }
 
   friend Mpfr_interval operator+(const Mpfr_interval& a, const Mpfr_interval& b)
   {
@@ -212,7 +221,7 @@ private:
 };
 
 } // namespace internal
-} // namespace PMA2
+} // namespace Progressive_medial_axes
 } // namespace CGAL
 
 #endif // CGAL_PROGRESSIVE_MEDIAL_AXIS_2_INTERNAL_MPFR_INTERVAL_H

@@ -1,5 +1,13 @@
 // Copyright (c) 2026 The Progressive_medial_axis_2 authors.
+// All rights reserved.
+//
+// This file is part of CGAL (www.cgal.org).
+//
+// $URL$
+// $Id$
 // SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+//
+// Author(s)     : The Progressive_medial_axis_2 authors
 //
 // Exact numbers a + b sqrt(D), with a, b, D rational and D > 0: the stage of
 // the filtered traits after the double intervals, before the MPFR intervals
@@ -32,7 +40,7 @@
 #include <exception>
 
 namespace CGAL {
-namespace PMA2 {
+namespace Progressive_medial_axes {
 namespace internal {
 
 /// Thrown when a value leaves the form a + b sqrt(D).
@@ -299,7 +307,7 @@ typedef One_root_sqrt_t<One_root_rational> One_root_sqrt;
 typedef One_root_sqrt_t<Small_one_root> Small_one_root_sqrt;
 
 } // namespace internal
-} // namespace PMA2
+} // namespace Progressive_medial_axes
 } // namespace CGAL
 
 #endif // CGAL_PROGRESSIVE_MEDIAL_AXIS_2_INTERNAL_ONE_ROOT_RATIONAL_H

@@ -1,5 +1,13 @@
 // Copyright (c) 2026 The Progressive_medial_axis_2 authors.
+// All rights reserved.
+//
+// This file is part of CGAL (www.cgal.org).
+//
+// $URL$
+// $Id$
 // SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+//
+// Author(s)     : The Progressive_medial_axis_2 authors
 //
 // Exact rationals with 128-bit numerator and denominator, for the fast path
 // of the one-root stage of the filtered traits.  The exact ties of
@@ -24,7 +32,7 @@
 #include <exception>
 
 namespace CGAL {
-namespace PMA2 {
+namespace Progressive_medial_axes {
 namespace internal {
 
 /// Thrown when a Small_rational result does not fit in 128 bits.
@@ -58,6 +66,15 @@ public:
       n_ = mi;
       d_ = Int(1) << (-e);
     }
+  }
+
+  /// The value of a Gmpq; throws if it does not fit.
+  explicit Small_rational(const Gmpq& q) : n_(0), d_(1)
+  {
+    const mpz_srcptr num = mpq_numref(q.mpq()), den = mpq_denref(q.mpq());
+    if(mpz_sizeinbase(num, 2) > 126 || mpz_sizeinbase(den, 2) > 126) throw Small_rational_overflow();
+    n_ = from_mpz(num);
+    d_ = from_mpz(den);
   }
 
   const Int& numerator() const { return n_; }
@@ -215,6 +232,14 @@ private:
     return negative ? -r : r;
   }
 
+  static Int from_mpz(mpz_srcptr z)
+  {
+    Uint u = 0;
+    const std::size_t limbs = mpz_size(z);
+    for(std::size_t i = limbs; i-- > 0;) u = (u << (8 * sizeof(mp_limb_t) - 1) << 1) | Uint(mpz_getlimbn(z, i));
+    return mpz_sgn(z) < 0 ? -Int(u) : Int(u);
+  }
+
   static Gmpz to_mpz(Int x)
   {
     const bool negative = x < 0;
@@ -232,7 +257,7 @@ inline Sign sign(const Small_rational& q) { return q.sign(); }
 inline Interval_nt<false> to_interval(const Small_rational& q) { return q.to_interval(); }
 
 } // namespace internal
-} // namespace PMA2
+} // namespace Progressive_medial_axes
 } // namespace CGAL
 
 #endif // CGAL_PROGRESSIVE_MEDIAL_AXIS_2_INTERNAL_SMALL_RATIONAL_H

@@ -1,5 +1,13 @@
 // Copyright (c) 2026 The Progressive_medial_axis_2 authors.
+// All rights reserved.
+//
+// This file is part of CGAL (www.cgal.org).
+//
+// $URL$
+// $Id$
 // SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+//
+// Author(s)     : The Progressive_medial_axis_2 authors
 //
 // The shape decomposition of the region-growing driver: a constrained
 // Delaunay triangulation of the polygon and the adjacency of its triangles.
@@ -12,13 +20,16 @@
 #include <CGAL/Triangulation_vertex_base_with_info_2.h>
 #include <CGAL/Triangulation_face_base_with_info_2.h>
 #include <CGAL/number_utils.h>
+#include <CGAL/Progressive_medial_axis_2/Input_error.h>
+#include <CGAL/Progressive_medial_axis_2/internal/Input_conversion.h>
 
 #include <deque>
+#include <string>
 #include <utility>
 #include <vector>
 
 namespace CGAL {
-namespace PMA2 {
+namespace Progressive_medial_axes {
 namespace internal {
 
 /// A triangle of the decomposition: its vertices (indices of input points,
@@ -30,27 +41,35 @@ struct Triangle {
 };
 
 /// Triangulates the polygon whose rings are the point ranges
-/// [ring_start[r], ring_start[r+1]) of `points`, consecutive along each ring.
-template <class Point_2>
-std::vector<Triangle> triangulate_rings(const std::vector<Point_2>& points,
+/// [ring_start[r], ring_start[r+1]) of `points`, consecutive along each ring,
+/// in the kernel of the points (with exact predicates): distinct input
+/// points stay distinct.
+template <class Kernel>
+std::vector<Triangle> triangulate_rings(const std::vector<typename Kernel::Point_2>& points,
                                         const std::vector<int>& ring_start)
 {
-  typedef Exact_predicates_inexact_constructions_kernel K;
+  typedef Exact_predicates_kernel_for<Kernel> TK;
+  typedef typename TK::type K;
   typedef Triangulation_vertex_base_with_info_2<int, K> Vb;
   typedef Triangulation_face_base_with_info_2<int, K> Fbi;
   typedef Constrained_triangulation_face_base_2<K, Fbi> Fb;
   typedef Triangulation_data_structure_2<Vb, Fb> Tds;
   typedef Constrained_Delaunay_triangulation_2<K, Tds, Exact_predicates_tag> CDT;
 
-  std::vector<std::pair<K::Point_2, int> > pts;
+  std::vector<std::pair<typename K::Point_2, int> > pts;
   pts.reserve(points.size());
   for(std::size_t i = 0; i < points.size(); ++i)
-    pts.emplace_back(K::Point_2(CGAL::to_double(points[i].x()), CGAL::to_double(points[i].y())), int(i));
+    pts.emplace_back(TK::point(points[i]), int(i));
   CDT cdt;
   cdt.insert(pts.begin(), pts.end());
   std::vector<typename CDT::Vertex_handle> handle(points.size());
   for(auto v = cdt.finite_vertices_begin(); v != cdt.finite_vertices_end(); ++v)
     handle[v->info()] = v;
+  // two input points at one place (possible only when the validation was
+  // skipped): the triangulation keeps one of them
+  for(std::size_t i = 0; i < points.size(); ++i)
+    if(handle[i] == typename CDT::Vertex_handle())
+      throw Input_error("repeated vertex (input not validated): input point " + std::to_string(i));
   for(std::size_t r = 0; r + 1 < ring_start.size(); ++r) {
     int b = ring_start[r], e = ring_start[r + 1];
     for(int i = b; i < e; ++i)
@@ -112,7 +131,7 @@ std::vector<Triangle> triangulate_rings(const std::vector<Point_2>& points,
 }
 
 } // namespace internal
-} // namespace PMA2
+} // namespace Progressive_medial_axes
 } // namespace CGAL
 
 #endif // CGAL_PROGRESSIVE_MEDIAL_AXIS_2_INTERNAL_TRIANGULATE_H

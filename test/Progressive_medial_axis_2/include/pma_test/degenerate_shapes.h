@@ -10,7 +10,7 @@
 // repeated anywhere, no zero-length edge, no spike, no two rings touching or crossing (not
 // even at one vertex), every hole strictly inside the outer ring and outside the others.
 // Flat vertices (angle pi, collinear with both neighbours) are allowed and some kinds have
-// them on purpose. Write a result with CGAL::PMA2::write_wkt_polygon (IO/polygon_io.h).
+// them on purpose. Write a result with pma_tool::write_wkt_polygon (IO/polygon_io.h).
 
 #ifndef PMA_TEST_DEGENERATE_SHAPES_H
 #define PMA_TEST_DEGENERATE_SHAPES_H
@@ -35,7 +35,7 @@ namespace pma_test {
 
 /// The first reason why `rings` is not a valid polygon with holes in the strict sense of
 /// this header, or an empty string if it is valid. Two independent exact checks: the
-/// library's own validator (CGAL::PMA2::validate_polygon_rings, what the library accepts
+/// library's own validator (CGAL::Progressive_medial_axes::validate_polygon_rings, what the library accepts
 /// today) and pma_test::is_valid_polygon_with_holes, plus the orientations (outer ring
 /// counter-clockwise, holes clockwise), which neither of them requires.
 inline std::string validity_problem(const std::vector<Ring>& rings)
@@ -46,7 +46,7 @@ inline std::string validity_problem(const std::vector<Ring>& rings)
     for(const Point& p : r)
       if(!std::isfinite(p.x()) || !std::isfinite(p.y())) return "non-finite coordinate";
   try {
-    CGAL::PMA2::validate_polygon_rings<K>(rings);
+    CGAL::Progressive_medial_axes::validate_polygon_rings<K>(rings);
   } catch(const std::exception& e) {
     return std::string("library validator: ") + e.what();
   }

@@ -1,10 +1,12 @@
-// This file is part of the CGAL package Progressive_medial_axis_2.
+// Copyright (c) 2026 The Progressive_medial_axis_2 authors.
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+//
+// The command-line tool's input and output of polygons (not part of the
+// library): reading a polygon with holes from WKT or GeoJSON, writing it as
+// WKT.  Errors are reported as the library's Input_error.
 
-#ifndef CGAL_PROGRESSIVE_MEDIAL_AXIS_2_IO_POLYGON_IO_H
-#define CGAL_PROGRESSIVE_MEDIAL_AXIS_2_IO_POLYGON_IO_H
-
-/// \file polygon_io.h
-/// Reading a polygon with holes from WKT or GeoJSON, writing it as WKT.
+#ifndef PMA_TOOL_POLYGON_IO_H
+#define PMA_TOOL_POLYGON_IO_H
 
 #include <CGAL/Progressive_medial_axis_2/Input_error.h>
 
@@ -28,9 +30,15 @@
 #include <system_error>
 #include <vector>
 
-namespace CGAL {
-namespace PMA2 {
+namespace pma_tool {
+
+using CGAL::Progressive_medial_axes::Input_error;
+using CGAL::Progressive_medial_axes::Rings;
+
 namespace internal {
+
+using CGAL::Progressive_medial_axes::internal::format_coordinate;
+using CGAL::Progressive_medial_axes::internal::format_point;
 
 // ------------------------------------------------------------------ common helpers
 
@@ -817,7 +825,6 @@ inline bool has_extension(const std::string& path, const char* extension)
 } // namespace internal
 
 /*!
-\ingroup PkgProgressiveMedialAxis2IO
 
 Reads a polygon with holes written as WKT: `POLYGON ((x y, x y, ...), (...), ...)`, the
 first ring being the outer ring and the others the holes. The keyword is
@@ -844,7 +851,6 @@ Rings<Point_2> read_wkt_polygon(std::istream& in)
 }
 
 /*!
-\ingroup PkgProgressiveMedialAxis2IO
 
 Reads a polygon with holes written as GeoJSON: a `Polygon` geometry object, a `Feature`
 whose geometry is a `Polygon`, or a `FeatureCollection` holding exactly one such
@@ -866,7 +872,6 @@ Rings<Point_2> read_geojson_polygon(std::istream& in)
 }
 
 /*!
-\ingroup PkgProgressiveMedialAxis2IO
 
 Reads a polygon with holes from the file `path`, as GeoJSON if its name ends with
 `.geojson` or `.json` and as WKT if it ends with `.wkt` (case-insensitive). For any
@@ -930,7 +935,6 @@ Rings<Point_2> read_polygon_file(const std::string& path)
 }
 
 /*!
-\ingroup PkgProgressiveMedialAxis2IO
 
 Writes `rings` as WKT, `POLYGON ((x y, ..., x0 y0), (...))`, each ring closed by
 repeating its first point and each coordinate written as by `printf("%.17g")` in the C
@@ -977,7 +981,6 @@ void write_wkt_polygon(std::ostream& out, const Rings<Point_2>& rings)
   out.write(text.data(), static_cast<std::streamsize>(text.size()));
 }
 
-} // namespace PMA2
-} // namespace CGAL
+} // namespace pma_tool
 
-#endif // CGAL_PROGRESSIVE_MEDIAL_AXIS_2_IO_POLYGON_IO_H
+#endif // PMA_TOOL_POLYGON_IO_H

@@ -8,9 +8,12 @@
 // usage, 1 on any other failure.
 
 #include <CGAL/Progressive_medial_axis_2.h>
-#include <CGAL/Progressive_medial_axis_2/IO/polygon_io.h>
-#include <CGAL/Progressive_medial_axis_2/IO/medial_axis_io.h>
-#include <CGAL/Progressive_medial_axis_2/IO/medial_axis_drawing.h>
+#include <CGAL/Simple_cartesian.h>
+#include <CGAL/CORE_Expr.h>
+
+#include <pma_tool/polygon_io.h>
+#include <pma_tool/medial_axis_io.h>
+#include <pma_tool/medial_axis_drawing.h>
 
 #include <chrono>
 #include <cstdio>
@@ -113,13 +116,11 @@ std::ofstream open_out(const std::string& path)
   return f;
 }
 
+// The counters of the stages of the exact-decision traits.
 template <class Traits>
-void print_filter_statistics(const Traits&) {}
-
-template <class CK>
-void print_filter_statistics(const CGAL::Progressive_medial_axis_filtered_traits_2<CK>&)
+auto print_filter_statistics(const Traits&, int) -> decltype(Traits::filter_statistics(), void())
 {
-  const auto& f = CGAL::Progressive_medial_axis_filtered_traits_2<CK>::filter_statistics();
+  const auto& f = Traits::filter_statistics();
   std::printf("filter_interval_evaluations %zu\nfilter_double_double_evaluations %zu\nfilter_mpfr_evaluations %zu\n"
               "filter_rational_evaluations %zu\nfilter_exact_evaluations %zu\nfilter_mpfr_comparisons %zu\n"
               "filter_rational_comparisons %zu\nfilter_exact_comparisons %zu\nfilter_exact_ties %zu\n",
@@ -128,22 +129,20 @@ void print_filter_statistics(const CGAL::Progressive_medial_axis_filtered_traits
 }
 
 template <class Traits>
+void print_filter_statistics(const Traits&, long) {}
+
+template <class Traits>
 int run(const Options& o)
 {
-  typedef typename Traits::Point_2 Point_2;
   typedef CGAL::Progressive_medial_axis_2<Traits> PMA;
   typedef typename PMA::Medial_axis Medial_axis;
-  typedef CGAL::PMA2::Generator_names<Medial_axis> Names;
+  typedef pma_tool::Generator_names<Medial_axis> Names;
 
   auto t0 = std::chrono::steady_clock::now();
-  typename PMA::Rings rings;
+  pma_tool::Rings<CGAL::Epick::Point_2> rings;
   try {
-    auto input = CGAL::PMA2::read_polygon_file<CGAL::Epick::Point_2>(o.input);
-    for(const auto& r : input) {
-      rings.emplace_back();
-      for(const auto& p : r) rings.back().push_back(Point_2(p.x(), p.y()));
-    }
-  } catch(const CGAL::PMA2::Input_error& e) {
+    rings = pma_tool::read_polygon_file<CGAL::Epick::Point_2>(o.input);
+  } catch(const CGAL::Progressive_medial_axes::Input_error& e) {
     std::cerr << o.input << ": " << e.what() << "\n";
     return 2;
   }
@@ -152,7 +151,7 @@ int run(const Options& o)
   std::unique_ptr<PMA> pma;
   try {
     pma.reset(new PMA(rings));
-  } catch(const CGAL::PMA2::Input_error& e) {
+  } catch(const CGAL::Progressive_medial_axes::Input_error& e) {
     std::cerr << o.input << ": " << e.what() << "\n";
     return 2;
   }
@@ -174,7 +173,7 @@ int run(const Options& o)
       char name[32];
       std::snprintf(name, sizeof(name), "_%03zu.svg", next_frame);
       std::ofstream f = open_out(o.frames_prefix + name);
-      CGAL::PMA2::write_svg(f, pma->medial_axis(),
+      pma_tool::write_svg(f, pma->medial_axis(),
                             "step " + std::to_string(pma->current_step()) + " of " +
                               std::to_string(pma->number_of_steps()), 1000, true);
       ++next_frame;
@@ -197,29 +196,29 @@ int run(const Options& o)
     std::vector<std::vector<CGAL::Epick::Point_2> > out;
     for(const auto& r : shape_names.rings()) {
       out.emplace_back();
-      for(int i : r) {
-        auto p = Medial_axis::to_xy(ma.points()[i]);
+      for(const auto& v : r) {
+        auto p = Medial_axis::to_xy(ma.point(v));
         out.back().push_back(CGAL::Epick::Point_2(p.first, p.second));
       }
     }
-    CGAL::PMA2::write_wkt_polygon(f, out);
+    pma_tool::write_wkt_polygon(f, out);
     f << "\n";
   }
   if(o.pairs)
-    CGAL::PMA2::write_pairs(std::cout, CGAL::PMA2::named_curves(ma, names));
+    pma_tool::write_pairs(std::cout, pma_tool::named_curves(ma, names));
   if(o.branches)
-    CGAL::PMA2::write_branches(std::cout, CGAL::PMA2::named_branches(ma, names, 1e-12 * CGAL::PMA2::bbox_diagonal(ma)));
+    pma_tool::write_branches(std::cout, pma_tool::named_branches(ma, names, 1e-12 * pma_tool::bbox_diagonal(ma)));
   if(!o.svg.empty()) {
     std::ofstream f = open_out(o.svg);
-    CGAL::PMA2::write_svg(f, ma, "");
+    pma_tool::write_svg(f, ma, "");
   }
   if(!o.geojson.empty()) {
     std::ofstream f = open_out(o.geojson);
-    CGAL::PMA2::write_geojson(f, ma, names);
+    pma_tool::write_geojson(f, ma, names);
   }
   if(!o.wkt_out.empty()) {
     std::ofstream f = open_out(o.wkt_out);
-    CGAL::PMA2::write_wkt_axis(f, ma);
+    pma_tool::write_wkt_axis(f, ma);
   }
   if(o.stats) {
     const CGAL::Progressive_medial_axis_statistics& s = pma->statistics();
@@ -233,8 +232,9 @@ int run(const Options& o)
                 read_seconds, s.validation_seconds, s.triangulation_seconds, s.merge_seconds);
     std::printf("switch_events %zu\nvanishing_events %zu\nanomalies %zu\nmax_n_v %zu\n",
                 s.switches, s.vanishings, s.anomalies, s.max_queue);
+    std::printf("redone_merges %zu\n", s.redone_merges);
     std::printf("medial_curves %zu\nbranch_vertices %zu\n", ma.number_of_edges(), nb);
-    print_filter_statistics(pma->traits());
+    print_filter_statistics(pma->traits(), 0);
   }
   return 0;
 }
@@ -245,11 +245,11 @@ int main(int argc, char** argv)
 {
   Options o = parse(argc, argv);
   try {
-    if(o.traits == "epick")
-      return run<CGAL::Progressive_medial_axis_traits_2<CGAL::Epick> >(o);
+    if(o.traits == "epick")   // every decision in double
+      return run<CGAL::Progressive_medial_axis_traits_2<CGAL::Simple_cartesian<double> > >(o);
     if(o.traits == "exact")
       return run<CGAL::Progressive_medial_axis_traits_2<CGAL::Simple_cartesian<CORE::Expr> > >(o);
-    return run<CGAL::Progressive_medial_axis_filtered_traits_2<> >(o);
+    return run<CGAL::Progressive_medial_axis_traits_2<CGAL::Epick> >(o);
   } catch(const std::exception& e) {
     std::cerr << "progressive_medial_axis: " << e.what() << "\n";
     return 1;

@@ -1,12 +1,13 @@
 // Copyright (c) 2026 The Progressive_medial_axis_2 authors.
 // SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
 //
-// Pictures and exchange formats of a medial axis: SVG, GeoJSON, WKT.
+// The command-line tool's pictures and exchange formats of a medial axis
+// (not part of the library): SVG, GeoJSON, WKT.
 
-#ifndef CGAL_PROGRESSIVE_MEDIAL_AXIS_2_IO_MEDIAL_AXIS_DRAWING_H
-#define CGAL_PROGRESSIVE_MEDIAL_AXIS_2_IO_MEDIAL_AXIS_DRAWING_H
+#ifndef PMA_TOOL_MEDIAL_AXIS_DRAWING_H
+#define PMA_TOOL_MEDIAL_AXIS_DRAWING_H
 
-#include <CGAL/Progressive_medial_axis_2/IO/medial_axis_io.h>
+#include <pma_tool/medial_axis_io.h>
 
 #include <algorithm>
 #include <cmath>
@@ -15,32 +16,9 @@
 #include <utility>
 #include <vector>
 
-namespace CGAL {
-namespace PMA2 {
+namespace pma_tool {
 
 namespace internal {
-
-struct Box {
-  double x0 = 1e300, y0 = 1e300, x1 = -1e300, y1 = -1e300;
-  void add(double x, double y)
-  {
-    x0 = (std::min)(x0, x); x1 = (std::max)(x1, x);
-    y0 = (std::min)(y0, y); y1 = (std::max)(y1, y);
-  }
-  double diagonal() const { return std::hypot(x1 - x0, y1 - y0); }
-};
-
-template <class Medial_axis>
-Box shape_box(const Medial_axis& ma)
-{
-  Box b;
-  for(const auto& c : ma.boundary_cycles())
-    for(int i : c) {
-      auto p = Medial_axis::to_xy(ma.points()[i]);
-      b.add(p.first, p.second);
-    }
-  return b;
-}
 
 inline std::string xml_escape(const std::string& s)
 {
@@ -57,7 +35,6 @@ inline std::string xml_escape(const std::string& s)
 } // namespace internal
 
 /*!
-\ingroup PkgProgressiveMedialAxis2IO
 Draws the shape of `ma` and its medial axis as an SVG picture of about
 `width` pixels: the shape filled, straight curves in blue, parabolic arcs in
 red, branch points as dots.  `title` is written in a corner.  With
@@ -68,13 +45,12 @@ template <class Medial_axis>
 void write_svg(std::ostream& out, const Medial_axis& ma, const std::string& title, double width = 1000,
                bool show_input = false)
 {
-  internal::Box box = internal::shape_box(ma);
-  if(show_input)
-    for(const auto& r : ma.input_rings())
-      for(int i : r) {
-        auto p = Medial_axis::to_xy(ma.points()[i]);
-        box.add(p.first, p.second);
-      }
+  Box box = shape_box(ma);
+  if(show_input) {
+    const Box in = input_box(ma);
+    box.add(in.x0, in.y0);
+    box.add(in.x1, in.y1);
+  }
   double w = box.x1 - box.x0, h = box.y1 - box.y0;
   if(!(w > 0)) w = 1;
   if(!(h > 0)) h = 1;
@@ -88,12 +64,12 @@ void write_svg(std::ostream& out, const Medial_axis& ma, const std::string& titl
   out << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << W << "\" height=\"" << H
       << "\" viewBox=\"0 0 " << W << ' ' << H << "\">\n";
   out << "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
-  // a filled path of closed rings of point indices
+  // a filled path of closed rings of polygon vertices
   auto rings_path = [&](const auto& rings, const char* style) {
     out << "<path " << style << " fill-rule=\"evenodd\" d=\"";
     for(const auto& c : rings) {
       for(std::size_t i = 0; i < c.size(); ++i) {
-        auto p = Medial_axis::to_xy(ma.points()[c[i]]);
+        auto p = Medial_axis::to_xy(ma.point(c[i]));
         std::snprintf(buf, sizeof(buf), "%c%.2f %.2f", i == 0 ? 'M' : 'L', X(p.first), Y(p.second));
         out << buf;
       }
@@ -101,14 +77,23 @@ void write_svg(std::ostream& out, const Medial_axis& ma, const std::string& titl
     }
     out << "\"/>\n";
   };
-  if(show_input)
-    rings_path(ma.input_rings(), "fill=\"#f4f4f4\" stroke=\"#b0b0b0\" stroke-width=\"0.6\"");
-  rings_path(ma.boundary_cycles(), "fill=\"#e8eef7\" stroke=\"#203040\" stroke-width=\"0.8\"");
+  if(show_input) {
+    std::vector<std::vector<typename Medial_axis::Input_vertex> > input(ma.number_of_input_rings());
+    for(std::size_t r = 0; r < input.size(); ++r)
+      for(std::size_t i = 0; i < ma.input_ring_size(r); ++i) {
+        typename Medial_axis::Input_vertex v;
+        v.ring = int(r);
+        v.index = int(i);
+        input[r].push_back(v);
+      }
+    rings_path(input, "fill=\"#f4f4f4\" stroke=\"#b0b0b0\" stroke-width=\"0.6\"");
+  }
+  rings_path(ma.shape_rings(), "fill=\"#e8eef7\" stroke=\"#203040\" stroke-width=\"0.8\"");
   for(int kind = 0; kind < 2; ++kind) {
     out << "<path fill=\"none\" stroke=\"" << (kind == 0 ? "#1f5fbf" : "#c0392b")
         << "\" stroke-width=\"1\" d=\"";
     for(const auto& e : ma.edges()) {
-      if((e.kind() == Medial_axis::PARABOLIC_ARC) != (kind == 1)) continue;
+      if((e.curve_kind() == Medial_axis::PARABOLIC_ARC) != (kind == 1)) continue;
       auto pl = e.polyline(tol);
       for(std::size_t i = 0; i < pl.size(); ++i) {
         std::snprintf(buf, sizeof(buf), "%c%.2f %.2f", i == 0 ? 'M' : 'L', X(pl[i].first), Y(pl[i].second));
@@ -133,7 +118,6 @@ void write_svg(std::ostream& out, const Medial_axis& ma, const std::string& titl
 }
 
 /*!
-\ingroup PkgProgressiveMedialAxis2IO
 Writes the medial axis as a GeoJSON FeatureCollection: one LineString per
 medial curve (properties: the two generator ids, `line` or `parabola`, the
 length) sampled within `tolerance` (default 1e-6 of the shape's diagonal),
@@ -142,14 +126,14 @@ and one Point per branch point (properties: generator ids, radius).
 template <class Medial_axis, class Names>
 void write_geojson(std::ostream& out, const Medial_axis& ma, const Names& names, double tolerance = -1)
 {
-  if(tolerance <= 0) tolerance = 1e-6 * internal::shape_box(ma).diagonal();
+  if(tolerance <= 0) tolerance = 1e-6 * shape_box(ma).diagonal();
   out << "{\"type\":\"FeatureCollection\",\"features\":[\n";
   bool first = true;
   for(const auto& e : ma.edges()) {
     std::string a = names(e.first_generator()), b = names(e.second_generator());
     if(b < a) std::swap(a, b);
     out << (first ? "" : ",\n") << "{\"type\":\"Feature\",\"properties\":{\"generators\":[\"" << a << "\",\"" << b
-        << "\"],\"curve\":\"" << (e.kind() == Medial_axis::PARABOLIC_ARC ? "parabola" : "line")
+        << "\"],\"curve\":\"" << (e.curve_kind() == Medial_axis::PARABOLIC_ARC ? "parabola" : "line")
         << "\",\"length\":" << format_double(e.length()) << "},\"geometry\":{\"type\":\"LineString\",\"coordinates\":[";
     auto pl = e.polyline(tolerance);
     for(std::size_t i = 0; i < pl.size(); ++i)
@@ -157,7 +141,7 @@ void write_geojson(std::ostream& out, const Medial_axis& ma, const Names& names,
     out << "]}}";
     first = false;
   }
-  for(const auto& br : named_branches(ma, names, 1e-12 * internal::shape_box(ma).diagonal())) {
+  for(const auto& br : named_branches(ma, names, 1e-12 * shape_box(ma).diagonal())) {
     out << (first ? "" : ",\n") << "{\"type\":\"Feature\",\"properties\":{\"generators\":[";
     for(std::size_t i = 0; i < br.generators.size(); ++i)
       out << (i ? "," : "") << '"' << br.generators[i] << '"';
@@ -169,14 +153,13 @@ void write_geojson(std::ostream& out, const Medial_axis& ma, const Names& names,
 }
 
 /*!
-\ingroup PkgProgressiveMedialAxis2IO
 Writes the medial axis as one WKT MULTILINESTRING, curves sampled within
 `tolerance` (default 1e-6 of the shape's diagonal).
 */
 template <class Medial_axis>
 void write_wkt_axis(std::ostream& out, const Medial_axis& ma, double tolerance = -1)
 {
-  if(tolerance <= 0) tolerance = 1e-6 * internal::shape_box(ma).diagonal();
+  if(tolerance <= 0) tolerance = 1e-6 * shape_box(ma).diagonal();
   out << "MULTILINESTRING (";
   bool first = true;
   for(const auto& e : ma.edges()) {
@@ -190,7 +173,6 @@ void write_wkt_axis(std::ostream& out, const Medial_axis& ma, double tolerance =
   out << ")\n";
 }
 
-} // namespace PMA2
-} // namespace CGAL
+} // namespace pma_tool
 
-#endif // CGAL_PROGRESSIVE_MEDIAL_AXIS_2_IO_MEDIAL_AXIS_DRAWING_H
+#endif // PMA_TOOL_MEDIAL_AXIS_DRAWING_H

@@ -1,0 +1,171 @@
+#!/usr/bin/env python3
+"""Degenerate-input benchmark: exact ties of integer grids, symmetric shapes,
+regular polygons and glyphs, against Epick and Segment_Delaunay_graph_2.
+
+    benchmark/Progressive_medial_axis_2/bench_degenerate.py [--before TOOL] [--runs N]
+                                                            [--timeout S] [--quick] [--out FILE]
+
+Needs a build in build/ (scripts/test.sh or cmake --build build).  Generates
+the shapes with make_degenerate (the sizes of the degenerate table and about
+10 times them, in benchmark/Progressive_medial_axis_2/data/degenerate/) and
+make_glyphs.py (several fonts, data/glyphs/), then measures for every shape:
+
+- ours: the whole `progressive_medial_axis` process with the default traits
+  (exact decisions), median of N runs, and its per-stage decision counts
+  from --stats (one-root, MPFR and nested-root stages);
+- Epick: the same process with --traits epick;
+- SDG: Segment_Delaunay_graph_2 filtered construction alone (bench_time
+  --methods sdg, in-process), median of N runs;
+- before (with --before TOOL): the same process with another build of the
+  tool, e.g. an older commit, under the time limit.
+
+Prints a Markdown table (and writes it to --out).  Glyphs are summarised per
+font (count, total and largest time).  Times are seconds.
+"""
+
+import argparse
+import os
+import re
+import statistics
+import subprocess
+import sys
+import time
+
+ROOT = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", ".."))
+BUILD = os.path.join(ROOT, "build")
+TOOL = os.path.join(BUILD, "tool/Progressive_medial_axis_2/progressive_medial_axis")
+BENCH_TIME = os.path.join(BUILD, "benchmark/Progressive_medial_axis_2/bench_time")
+MAKE_DEGENERATE = os.path.join(BUILD, "benchmark/Progressive_medial_axis_2/make_degenerate")
+DATA = os.path.join(ROOT, "benchmark/Progressive_medial_axis_2/data")
+FONTS = "DejaVuSans,DejaVuSerif-Bold,LiberationSerif-Regular,FreeMono,FreeSerif"
+
+
+def run_process(cmd, timeout):
+    """Wall time of one process, or None if it failed or ran out of time."""
+    start = time.perf_counter()
+    try:
+        p = subprocess.run(cmd, stdout=subprocess.PIPE, stderr=subprocess.PIPE, timeout=timeout, text=True)
+    except subprocess.TimeoutExpired:
+        return None, ""
+    if p.returncode != 0:
+        return None, p.stderr.strip()
+    return time.perf_counter() - start, p.stdout
+
+
+def median_process(cmd, runs, timeout):
+    times, out = [], ""
+    for _ in range(runs):
+        t, o = run_process(cmd, timeout)
+        if t is None:
+            return None, o
+        times.append(t)
+        out = o
+    return statistics.median(times), out
+
+
+def stats_of(text):
+    d = {}
+    for line in text.splitlines():
+        parts = line.split()
+        if len(parts) == 2:
+            d[parts[0]] = parts[1]
+    return d
+
+
+def sdg_time(path, runs, timeout):
+    p = subprocess.run([BENCH_TIME, "--runs", str(runs), "--timeout", str(timeout), "--no-baseline",
+                        "--methods", "sdg", path], stdout=subprocess.PIPE, stderr=subprocess.DEVNULL, text=True)
+    for line in p.stdout.splitlines()[1:]:
+        f = line.split("\t")
+        if len(f) > 4 and f[3] == "sdg":
+            v = float(f[4])
+            return v if v >= 0 else None
+    return None
+
+
+def fmt(t, limit=None):
+    if t is None:
+        return "over %g s" % limit if limit else "failed"
+    return "%.3g" % t if t >= 0.001 else "%.1e" % t
+
+
+def main():
+    ap = argparse.ArgumentParser()
+    ap.add_argument("--before", help="another build of progressive_medial_axis to compare with")
+    ap.add_argument("--runs", type=int, default=3)
+    ap.add_argument("--timeout", type=float, default=60)
+    ap.add_argument("--quick", action="store_true", help="only the sizes of the table, no glyphs")
+    ap.add_argument("--out", help="also write the table to this file")
+    a = ap.parse_args()
+
+    degenerate = os.path.join(DATA, "degenerate")
+    subprocess.run([MAKE_DEGENERATE, degenerate], check=True, stdout=subprocess.DEVNULL)
+    shapes = sorted(os.path.join(degenerate, f) for f in os.listdir(degenerate) if f.endswith(".wkt"))
+    if not a.quick:
+        big = os.path.join(DATA, "degenerate10")
+        subprocess.run([MAKE_DEGENERATE, big, "--scale10"], check=True, stdout=subprocess.DEVNULL)
+        shapes += sorted(os.path.join(big, f) for f in os.listdir(big) if f.endswith(".wkt"))
+
+    lines = []
+    lines.append("| shape | vertices | holes | before | ours (default) | ours, Epick | SDG filtered | ours / Epick | ours / SDG | one-root | MPFR | nested |")
+    lines.append("|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|")
+    for path in shapes:
+        name = os.path.relpath(path, DATA)[:-4]
+        ours, out = median_process([TOOL, "--stats", path], a.runs, a.timeout)
+        s = stats_of(out)
+        epick, _ = median_process([TOOL, "--traits", "epick", path], a.runs, a.timeout)
+        sdg = sdg_time(path, a.runs, a.timeout)
+        before = None
+        if a.before:
+            before, _ = median_process([a.before, path], 1, a.timeout)
+        stage = lambda k: int(s.get("filter_%s_evaluations" % k, 0)) + int(s.get("filter_%s_comparisons" % k, 0))
+        ratio = lambda x, y: "%.2f" % (x / y) if x and y else "-"
+        row = "| %s | %s | %s | %s | %s | %s | %s | %s | %s | %d | %d | %d |" % (
+            name, s.get("input_vertices", "?"), s.get("holes", "?"),
+            fmt(before, a.timeout) if a.before else "-", fmt(ours, a.timeout), fmt(epick, a.timeout),
+            fmt(sdg, a.timeout), ratio(ours, epick), ratio(ours, sdg),
+            stage("rational"), stage("mpfr"), stage("exact"))
+        print(row, flush=True)
+        lines.append(row)
+
+    if not a.quick:
+        glyphs = os.path.join(DATA, "glyphs")
+        subprocess.run([sys.executable, os.path.join(ROOT, "benchmark/Progressive_medial_axis_2/make_glyphs.py"),
+                        glyphs, "--fonts", FONTS], check=True, stdout=subprocess.DEVNULL)
+        lines.append("")
+        lines.append("| glyph font | glyphs | vertices (max) | ours total | ours max | Epick total | SDG total | SDG max | ours / SDG, max over glyphs | nested decisions |")
+        lines.append("|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|")
+        by_font = {}
+        for f in sorted(os.listdir(glyphs)):
+            if f.endswith(".wkt"):
+                by_font.setdefault(f.split("_")[0], []).append(os.path.join(glyphs, f))
+        for font, files in sorted(by_font.items()):
+            tot = mx = etot = stot = smx = worst = 0.0
+            vmax = nested = 0
+            for path in files:
+                t, out = median_process([TOOL, "--stats", path], 1, a.timeout)
+                s = stats_of(out)
+                e, _ = median_process([TOOL, "--traits", "epick", path], 1, a.timeout)
+                g = sdg_time(path, 1, a.timeout)
+                t = t if t is not None else a.timeout
+                tot += t
+                mx = max(mx, t)
+                etot += e or 0
+                stot += g or 0
+                smx = max(smx, g or 0)
+                if g:
+                    worst = max(worst, t / g)
+                vmax = max(vmax, int(s.get("input_vertices", 0)))
+                nested += int(s.get("filter_exact_evaluations", 0)) + int(s.get("filter_exact_comparisons", 0))
+            row = "| %s | %d | %d | %.3g | %.3g | %.3g | %.3g | %.3g | %.2f | %d |" % (
+                font, len(files), vmax, tot, mx, etot, stot, smx, worst, nested)
+            print(row, flush=True)
+            lines.append(row)
+
+    if a.out:
+        with open(a.out, "w") as f:
+            f.write("\n".join(lines) + "\n")
+
+
+if __name__ == "__main__":
+    main()

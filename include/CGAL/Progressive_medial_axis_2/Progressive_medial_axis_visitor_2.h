@@ -1,0 +1,58 @@
+// Copyright (c) 2026 The Progressive_medial_axis_2 authors.
+// All rights reserved.
+//
+// This file is part of CGAL (www.cgal.org).
+//
+// $URL$
+// $Id$
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+//
+// Author(s)     : The Progressive_medial_axis_2 authors
+
+#ifndef CGAL_PROGRESSIVE_MEDIAL_AXIS_2_PROGRESSIVE_MEDIAL_AXIS_VISITOR_2_H
+#define CGAL_PROGRESSIVE_MEDIAL_AXIS_2_PROGRESSIVE_MEDIAL_AXIS_VISITOR_2_H
+
+#include <CGAL/license/Progressive_medial_axis_2.h>
+
+#include <CGAL/Progressive_medial_axis_2/Merge_statistics.h>
+
+#include <cstddef>
+
+namespace CGAL {
+
+/*!
+\ingroup PkgProgressiveMedialAxis2Ref
+Counters and timings of a progressive computation.  Per-step figures (the
+queue size of every step, times) are given to a visitor, see
+`ProgressiveMedialAxisVisitor_2`.
+*/
+struct Progressive_medial_axis_statistics {
+  std::size_t input_vertices = 0;
+  std::size_t holes = 0;
+  std::size_t triangles = 0;
+  std::size_t merges = 0;          ///< merges done (one per shared edge of each triangle added)
+  double validation_seconds = 0;   ///< the check of the input (0 when skipped)
+  double triangulation_seconds = 0;
+  double merge_seconds = 0;        ///< total time spent building step 0 and in refinement steps
+  std::size_t switches = 0;        ///< switch critical points traversed
+  std::size_t vanishings = 0;      ///< vanishing critical points traversed
+  std::size_t anomalies = 0;       ///< events forced to keep the topology valid (0: exact decisions never force one, and the double model redoes such merges)
+  std::size_t redone_merges = 0;   ///< merges of the double model redone with exact decisions after an anomaly
+  std::size_t max_queue = 0;       ///< n_v: the largest priority queue of any merge
+};
+
+/*!
+\ingroup PkgProgressiveMedialAxis2Ref
+The default visitor of `Progressive_medial_axis_2`: does nothing.
+\cgalModels `ProgressiveMedialAxisVisitor_2`
+*/
+struct Default_progressive_medial_axis_visitor {
+  void on_switch() {}
+  void on_vanish() {}
+  void on_merge(const Progressive_medial_axes::Merge_statistics&) {}
+  void on_step(std::size_t /*step*/, std::size_t /*n_v*/) {}
+};
+
+} // namespace CGAL
+
+#endif // CGAL_PROGRESSIVE_MEDIAL_AXIS_2_PROGRESSIVE_MEDIAL_AXIS_VISITOR_2_H

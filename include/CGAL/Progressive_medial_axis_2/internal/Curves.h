@@ -1,0 +1,118 @@
+// Copyright (c) 2026 The Progressive_medial_axis_2 authors.
+// All rights reserved.
+//
+// This file is part of CGAL (www.cgal.org).
+//
+// $URL$
+// $Id$
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+//
+// Author(s)     : The Progressive_medial_axis_2 authors
+//
+// The geometry of a medial curve in double precision, for output: its
+// length and a polyline within a tolerance.  A curve is a line segment, or
+// an arc of the parabola of a focus (a reflex vertex) and a directrix (the
+// line of a segment).  Everything is computed in a frame scaled to the
+// curve, so that coordinates near 1e300 or 1e-300 neither overflow nor
+// underflow.
+
+#ifndef CGAL_PROGRESSIVE_MEDIAL_AXIS_2_INTERNAL_CURVES_H
+#define CGAL_PROGRESSIVE_MEDIAL_AXIS_2_INTERNAL_CURVES_H
+
+#include <algorithm>
+#include <cmath>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Progressive_medial_axes {
+namespace internal {
+
+/// A medial curve from `a` to `b`: a segment, or an arc of a parabola.
+struct Curve {
+  typedef std::pair<double, double> Point;
+  Point a, b;
+  bool parabolic = false;
+  // the parabola, in a frame along the directrix: the foot (fx, fy) of the
+  // focus, the unit direction t of the directrix, the unit normal n towards
+  // the focus, the height h of the focus; all lengths divided by `scale`
+  double fx = 0, fy = 0, tx = 1, ty = 0, nx = 0, ny = 1, h = 1, scale = 1;
+
+  /// Sets the parabola of the focus p and the line through q0, q1.
+  void set_parabola(const Point& p, const Point& q0, const Point& q1)
+  {
+    scale = (std::max)({std::fabs(p.first), std::fabs(p.second), std::fabs(q0.first), std::fabs(q0.second),
+                        std::fabs(q1.first), std::fabs(q1.second), std::fabs(a.first), std::fabs(a.second),
+                        std::fabs(b.first), std::fabs(b.second)});
+    if(!(scale > 0) || !std::isfinite(scale)) return;
+    const double px = p.first / scale, py = p.second / scale;
+    const double ax = q0.first / scale, ay = q0.second / scale;
+    const double dx = q1.first / scale - ax, dy = q1.second / scale - ay;
+    const double len = std::hypot(dx, dy);
+    if(!(len > 0)) return;
+    tx = dx / len;
+    ty = dy / len;
+    nx = -ty;
+    ny = tx;
+    const double s = (px - ax) * tx + (py - ay) * ty;
+    fx = ax + s * tx;
+    fy = ay + s * ty;
+    h = (px - ax) * nx + (py - ay) * ny;
+    parabolic = h > 0;
+  }
+
+  /// Abscissa along the directrix of a point (scaled frame).
+  double abscissa(const Point& q) const { return (q.first / scale - fx) * tx + (q.second / scale - fy) * ty; }
+
+  /// The point of the parabola at abscissa x (scaled frame), unscaled.
+  Point at(double x) const
+  {
+    const double y = (x * x + h * h) / (2.0 * h);
+    return Point((fx + x * tx + y * nx) * scale, (fy + x * ty + y * ny) * scale);
+  }
+
+  // arc length from the vertex of the parabola to abscissa x (scaled frame)
+  double arc(double x) const
+  {
+    const double s = std::hypot(x, h);
+    return (x * s + h * h * std::asinh(x / h)) / (2.0 * h);
+  }
+
+  double length() const
+  {
+    if(!parabolic) {
+      const double sc = (std::max)({std::fabs(a.first), std::fabs(a.second), std::fabs(b.first), std::fabs(b.second)});
+      if(!(sc > 0)) return 0;
+      return std::hypot(b.first / sc - a.first / sc, b.second / sc - a.second / sc) * sc;
+    }
+    return std::fabs(arc(abscissa(b)) - arc(abscissa(a))) * scale;
+  }
+
+  /// Points from a to b whose polyline stays within `tolerance` of the
+  /// curve: a segment gives its two ends; a parabolic arc is cut into
+  /// pieces whose sagitta (width^2 / (16 h) for a piece of width w of a
+  /// parabola of height h) is at most the tolerance.  A tolerance <= 0
+  /// stands for 1e-9 times the largest coordinate of the curve.  At most
+  /// 10^8 points.
+  std::vector<Point> polyline(double tolerance) const
+  {
+    std::vector<Point> out;
+    out.push_back(a);
+    if(parabolic) {
+      const double x1 = abscissa(a), x2 = abscissa(b);
+      const double relative = tolerance > 0 ? tolerance / scale : 1e-9;
+      const double step = std::sqrt(16.0 * h * relative);
+      const double pieces = std::ceil(std::fabs(x2 - x1) / step);
+      const long n = pieces > 1e8 ? 100000000L : (std::max)(1L, long(pieces));
+      for(long i = 1; i < n; ++i) out.push_back(at(x1 + (x2 - x1) * double(i) / double(n)));
+    }
+    out.push_back(b);
+    return out;
+  }
+};
+
+} // namespace internal
+} // namespace Progressive_medial_axes
+} // namespace CGAL
+
+#endif // CGAL_PROGRESSIVE_MEDIAL_AXIS_2_INTERNAL_CURVES_H

@@ -1,0 +1,267 @@
+// Copyright (c) 2026 The Progressive_medial_axis_2 authors.
+// All rights reserved.
+//
+// This file is part of CGAL (www.cgal.org).
+//
+// $URL$
+// $Id$
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+//
+// Author(s)     : The Progressive_medial_axis_2 authors
+//
+// The engine of the package: the data of a medial axis (input points, the
+// half-edge structure of the generator cells) and the two operations that
+// every driver builds on:
+//   - add_triangle(): the medial axis of one triangle, a new component;
+//   - merge(): the topology-oriented merge of two cells along the segment
+//     they share (Merge.h).
+// Drivers (region growing, and the ones to come: divide and conquer,
+// boundary evolution) decide which triangles to add and which segments to
+// merge along; they never write into the half-edge structure themselves.
+// The view (Medial_axis_2) reads the same data.
+
+#ifndef CGAL_PROGRESSIVE_MEDIAL_AXIS_2_INTERNAL_MEDIAL_AXIS_ENGINE_H
+#define CGAL_PROGRESSIVE_MEDIAL_AXIS_2_INTERNAL_MEDIAL_AXIS_ENGINE_H
+
+#include <CGAL/Progressive_medial_axis_2/internal/Halfedge_structure.h>
+#include <CGAL/Progressive_medial_axis_2/internal/Merge.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <memory>
+#include <type_traits>
+#include <vector>
+
+namespace CGAL {
+namespace Progressive_medial_axes {
+namespace internal {
+
+/// An input point: its ring (0 the outer ring, k the k-th hole), its index
+/// in the ring as written, and its successor along the ring with the
+/// interior on the left.
+struct Point_info {
+  int ring = -1, index = -1;
+  int next = -1;
+  bool reversed = false;  // the ring was given in the other orientation
+};
+
+/// The data of a medial axis: the input points and the half-edge structure.
+template <class Point_2, class FT>
+struct Medial_axis_data {
+  typedef Halfedge_structure<Point_2, FT> Hds;
+  Hds hds;
+  std::vector<Point_2> points;
+  std::vector<Point_info> info;
+  std::vector<int> ring_start;   // the points of ring r are [ring_start[r], ring_start[r+1])
+};
+
+/// The model with exact decisions that redoes a merge of the traits
+/// `Traits` when it meets an anomaly: none by default (see the traits).
+template <class Traits>
+struct Exact_fallback {
+  typedef void type;
+};
+
+// Counts the events of a merge that may be undone, to report them once it stands.
+struct Recording_merge_visitor {
+  std::size_t switches = 0, vanishings = 0;
+  void on_switch() { ++switches; }
+  void on_vanish() { ++vanishings; }
+  template <class Visitor>
+  void replay(Visitor& v) const
+  {
+    for(std::size_t i = 0; i < switches; ++i) v.on_switch();
+    for(std::size_t i = 0; i < vanishings; ++i) v.on_vanish();
+  }
+};
+
+template <class Traits>
+class Medial_axis_engine
+{
+public:
+  typedef typename Traits::Point_2 Point_2;
+  typedef typename Traits::FT FT;
+  typedef typename Traits::Site_2 Site_2;
+  typedef Medial_axis_data<Point_2, FT> Data;
+  typedef typename Data::Hds Hds;
+
+  Medial_axis_engine(Data& data, const Traits& traits)
+    : data_(data), traits_(traits), merge_(data.hds, data.points, traits)
+  {
+    if constexpr(Has_fallback) {
+      exact_merge_.reset(new Medial_merge<Fallback>(data.hds, data.points, exact_traits_));
+      merge_.set_strict(true);
+    }
+  }
+
+  Data& data() { return data_; }
+  const Data& data() const { return data_; }
+  const Traits& traits() const { return traits_; }
+
+  int source(int h) const { return data_.hds.source(h); }
+  int target(int h) const { return data_.hds.target(h); }
+
+  /// Adds the medial axis of the triangle of input points `v[0], v[1],
+  /// v[2]` (counter-clockwise) as a new component: three bisectors meeting
+  /// at the incentre.  `corner[i]` is an existing vertex of the structure to
+  /// use as the corner at `v[i]` (a corner of the shape across the side the
+  /// triangle will be merged along), or NO_INDEX for a new one.  Returns the
+  /// boundary half-edges of the sides: side i runs from `v[i+1]` to
+  /// `v[i+2]`, with the triangle on its left.
+  std::array<int, 3> add_triangle(const int v[3], const int corner[3])
+  {
+    Hds& hds = data_.hds;
+    int V[3];
+    for(int i = 0; i < 3; ++i)
+      V[i] = corner[i] != NO_INDEX ? corner[i] : hds.new_vertex(data_.points[v[i]], FT(0), v[i]);
+    const int Fa = hds.new_face(false, v[0], v[1]);   // side 2
+    const int Fb = hds.new_face(false, v[1], v[2]);   // side 0
+    const int Fc = hds.new_face(false, v[2], v[0]);   // side 1
+    const int VI = hds.new_pending_vertex(Fa, Fb, Fc); // the incentre
+    const int ba = hds.new_edge(Fa, OUTSIDE);
+    const int bb = hds.new_edge(Fb, OUTSIDE);
+    const int bc = hds.new_edge(Fc, OUTSIDE);
+    hds.he(ba).vertex = V[1]; hds.he(ba ^ 1).vertex = V[0];
+    hds.he(bb).vertex = V[2]; hds.he(bb ^ 1).vertex = V[1];
+    hds.he(bc).vertex = V[0]; hds.he(bc ^ 1).vertex = V[2];
+    const int s1 = hds.new_edge(Fa, Fb);   // V1 -> I in Fa
+    const int s2 = hds.new_edge(Fb, Fc);   // V2 -> I in Fb
+    const int s0 = hds.new_edge(Fc, Fa);   // V0 -> I in Fc
+    hds.he(s1).vertex = VI; hds.he(s1 ^ 1).vertex = V[1];
+    hds.he(s2).vertex = VI; hds.he(s2 ^ 1).vertex = V[2];
+    hds.he(s0).vertex = VI; hds.he(s0 ^ 1).vertex = V[0];
+    hds.link(ba, s1); hds.link(s1, s0 ^ 1); hds.link(s0 ^ 1, ba);
+    hds.link(bb, s2); hds.link(s2, s1 ^ 1); hds.link(s1 ^ 1, bb);
+    hds.link(bc, s0); hds.link(s0, s2 ^ 1); hds.link(s2 ^ 1, bc);
+    hds.link(ba ^ 1, bc ^ 1); hds.link(bc ^ 1, bb ^ 1); hds.link(bb ^ 1, ba ^ 1);
+    hds.face(Fa).halfedge = ba;
+    hds.face(Fb).halfedge = bb;
+    hds.face(Fc).halfedge = bc;
+    hds.vertex(VI).halfedge = s1;
+    if(hds.vertex(V[0]).halfedge == NO_INDEX) hds.vertex(V[0]).halfedge = bc;
+    if(hds.vertex(V[1]).halfedge == NO_INDEX) hds.vertex(V[1]).halfedge = ba;
+    if(hds.vertex(V[2]).halfedge == NO_INDEX) hds.vertex(V[2]).halfedge = bb;
+    return {{bb, bc, ba}};
+  }
+
+  /// Merges the two cells of the segment PQ shared by two components (or
+  /// by two sides of one): `hp` is the boundary half-edge from P to Q of
+  /// one side, `hm` the boundary half-edge from Q to P of the other.
+  template <class Visitor>
+  Merge_statistics merge(int hp, int hm, Visitor& visitor)
+  {
+    if constexpr(Has_fallback) {
+      // Inexact decisions: a merge that meets an anomaly is undone and
+      // redone with exact decisions (as VRONI recovers at a higher level
+      // of precision).
+      Hds& hds = data_.hds;
+      hds.begin_journal();
+      Recording_merge_visitor recording;
+      try {
+        const Merge_statistics s = merge_.merge(hp, hm, recording);
+        check_new_vertices();
+        hds.end_journal();
+        recording.replay(visitor);
+        return s;
+      } catch(Merge_anomaly&) {
+        hds.rollback();
+        hds.end_journal();
+      } catch(Uncertain_decision&) {
+        hds.rollback();
+        hds.end_journal();
+      }
+      Merge_statistics s = exact_merge_->merge(hp, hm, visitor);
+      s.redone_exactly = true;
+      return s;
+    } else {
+      return merge_.merge(hp, hm, visitor);
+    }
+  }
+
+  /// Computes the coordinates and radius of every vertex created since the
+  /// last call that is still alive and pending.
+  void resolve_pending()
+  {
+    Hds& hds = data_.hds;
+    for(int v : hds.take_pending())
+      if(hds.vertex(v).alive && hds.vertex(v).pending) resolve(v);
+  }
+
+  // The double model's check of a merge: every vertex it created or whose
+  // cells it changed (the vertices of the two cells of the separator) is the centre of a disk that touches the generators of all the
+  // cells around it (within a relative 1e-9), on the segments themselves;
+  // else the merge is redone with exact decisions.  This catches the events
+  // that a wrong decision on nearly degenerate input created.
+  void check_new_vertices()
+  {
+    Hds& hds = data_.hds;
+    std::vector<int> vertices = hds.pending_in_journal();
+    merge_.for_each_switch_vertex([&](int w) { vertices.push_back(w); });
+    for(int v : vertices) {
+      const auto& x = static_cast<const Hds&>(hds).vertex(v);
+      if(!x.alive || x.input_point != NO_INDEX || x.halfedge == NO_INDEX) continue;
+      Point_2 c = x.point;
+      FT r = x.radius;
+      if(x.pending) {
+        auto site_of = [&](const int* p) {
+          return p[0] == p[1] ? Site_2::point(data_.points[p[0]]) : Site_2::segment(data_.points[p[0]], data_.points[p[1]]);
+        };
+        if(!traits_.construct_medial_disk_2_object()(site_of(x.triple[0]), site_of(x.triple[1]), site_of(x.triple[2]), c, r))
+          throw Uncertain_decision();
+      }
+      const double cx = CGAL::to_double(c.x()), cy = CGAL::to_double(c.y()), rr = CGAL::to_double(r);
+      double scale = std::fabs(cx) + std::fabs(cy) + rr;
+      const int h0 = x.halfedge;
+      int h = h0;
+      do {
+        const int f = hds.face_of(h);
+        if(f >= 0) {
+          const auto& F = static_cast<const Hds&>(hds).face(f);
+          const double ax = CGAL::to_double(data_.points[F.p0].x()), ay = CGAL::to_double(data_.points[F.p0].y());
+          const double bx = CGAL::to_double(data_.points[F.p1].x()), by = CGAL::to_double(data_.points[F.p1].y());
+          scale = (std::max)(scale, (std::max)((std::max)(std::fabs(ax), std::fabs(ay)), (std::max)(std::fabs(bx), std::fabs(by))));
+          const double d = distance_to_segment(cx, cy, ax, ay, bx, by);
+          if(!(std::fabs(d - rr) <= 1e-9 * scale)) throw Uncertain_decision();
+        }
+        h = Hds::twin(hds.next(h));
+      } while(h != h0);
+    }
+  }
+
+  static double distance_to_segment(double px, double py, double ax, double ay, double bx, double by)
+  {
+    const double dx = bx - ax, dy = by - ay, l2 = dx * dx + dy * dy;
+    double t = l2 > 0 ? ((px - ax) * dx + (py - ay) * dy) / l2 : 0;
+    t = t < 0 ? 0 : (t > 1 ? 1 : t);
+    const double ex = px - ax - t * dx, ey = py - ay - t * dy;
+    return std::sqrt(ex * ex + ey * ey);
+  }
+
+  void resolve(int v)
+  {
+    resolve_vertex(data_.hds, v, traits_, [this](int f) { return merge_.site(f); },
+                   [this](int p0, int p1) {
+                     return p0 == p1 ? Site_2::point(data_.points[p0])
+                                     : Site_2::segment(data_.points[p0], data_.points[p1]);
+                   });
+  }
+
+private:
+  typedef typename Exact_fallback<Traits>::type Fallback;
+  static constexpr bool Has_fallback = !std::is_void<Fallback>::value;
+  typedef typename std::conditional<Has_fallback, Fallback, Traits>::type Fallback_traits;
+
+  Data& data_;
+  const Traits& traits_;
+  Medial_merge<Traits> merge_;
+  Fallback_traits exact_traits_;
+  std::unique_ptr<Medial_merge<Fallback_traits> > exact_merge_;
+};
+
+} // namespace internal
+} // namespace Progressive_medial_axes
+} // namespace CGAL
+
+#endif // CGAL_PROGRESSIVE_MEDIAL_AXIS_2_INTERNAL_MEDIAL_AXIS_ENGINE_H

@@ -1,0 +1,139 @@
+// Copyright (c) 2026 The Progressive_medial_axis_2 authors.
+// All rights reserved.
+//
+// This file is part of CGAL (www.cgal.org).
+//
+// $URL$
+// $Id$
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+//
+// Author(s)     : The Progressive_medial_axis_2 authors
+//
+// The region-growing driver (Liu et al. 2016, section 6.1): the polygon is
+// cut into the triangles of a constrained Delaunay triangulation; step 0 is
+// the axis of the largest triangle, and every later step adds the next
+// triangle of a breadth-first traversal of the triangles' adjacency (or a
+// few, see Growth_order.h), merging it along each side it shares with the
+// grown shape.  It only asks the engine to add triangles and to merge.
+
+#ifndef CGAL_PROGRESSIVE_MEDIAL_AXIS_2_INTERNAL_REGION_GROWING_H
+#define CGAL_PROGRESSIVE_MEDIAL_AXIS_2_INTERNAL_REGION_GROWING_H
+
+#include <CGAL/Progressive_medial_axis_2/internal/Medial_axis_engine.h>
+#include <CGAL/Progressive_medial_axis_2/internal/Triangulate.h>
+#include <CGAL/Progressive_medial_axis_2/internal/Growth_order.h>
+
+#include <CGAL/number_utils.h>
+
+#include <array>
+#include <cstddef>
+#include <vector>
+
+namespace CGAL {
+namespace Progressive_medial_axes {
+namespace internal {
+
+template <class Traits>
+class Region_growing
+{
+public:
+  typedef Medial_axis_engine<Traits> Engine;
+
+  /// Triangulates the polygon of the engine's points and orders the triangles.
+  explicit Region_growing(Engine& engine)
+    : engine_(engine)
+  {
+    const auto& data = engine.data();
+    triangles_ = triangulate_rings<typename Traits::Kernel>(data.points, data.ring_start);
+    steps_ = Growth_order(triangles_, data.points.size(), largest_triangle()).steps();
+    added_.assign(triangles_.size(), 0);
+    sides_.assign(triangles_.size(), std::array<int, 3>{{NO_INDEX, NO_INDEX, NO_INDEX}});
+  }
+
+  std::size_t number_of_triangles() const { return triangles_.size(); }
+  /// Number of steps after step 0.
+  std::size_t number_of_steps() const { return steps_.empty() ? 0 : steps_.size() - 1; }
+
+  /// Builds step 0: the axis of the first triangle.
+  void start()
+  {
+    const int t = steps_[0][0];
+    const int none[3] = {NO_INDEX, NO_INDEX, NO_INDEX};
+    sides_[t] = engine_.add_triangle(triangles_[t].v, none);
+    added_[t] = 1;
+  }
+
+  /// Does step k >= 1: adds its triangles, merging each along the sides it
+  /// shares with the grown shape (along the first one, then along the
+  /// others, whose two sides are then in the same shape).  Returns the
+  /// largest queue size n_v of its merges.
+  template <class Visitor>
+  std::size_t step(std::size_t k, Visitor& visitor)
+  {
+    std::size_t n_v = 0;
+    for(int t : steps_[k]) {
+      const Triangle& T = triangles_[t];
+      int shared[3], ns = 0;
+      for(int e = 0; e < 3; ++e)
+        if(T.nbr[e] >= 0 && added_[T.nbr[e]]) shared[ns++] = e;
+      CGAL_assertion(ns > 0);
+      // the corners of the grown shape at the ends of the first shared side
+      int corner[3] = {NO_INDEX, NO_INDEX, NO_INDEX};
+      {
+        const int e = shared[0];
+        const int h = sides_[T.nbr[e]][side_towards(T.nbr[e], t)];   // runs from v[e+2] to v[e+1]
+        corner[(e + 1) % 3] = engine_.target(h);
+        corner[(e + 2) % 3] = engine_.source(h);
+      }
+      sides_[t] = engine_.add_triangle(T.v, corner);
+      added_[t] = 1;
+      for(int i = 0; i < ns; ++i) {
+        const int e = shared[i], u = T.nbr[e];
+        const Merge_statistics ms = engine_.merge(sides_[u][side_towards(u, t)], sides_[t][e], visitor);
+        visitor.on_merge(ms);
+        if(ms.max_queue > n_v) n_v = ms.max_queue;
+      }
+    }
+    return n_v;
+  }
+
+private:
+  int side_towards(int u, int t) const
+  {
+    int e = 0;
+    while(triangles_[u].nbr[e] != t) ++e;
+    return e;
+  }
+
+  // The triangle of largest area: the start of the growth.
+  int largest_triangle() const
+  {
+    const auto& points = engine_.data().points;
+    int start = 0;
+    double best = -1;
+    for(std::size_t t = 0; t < triangles_.size(); ++t) {
+      const Triangle& T = triangles_[t];
+      const double ax = CGAL::to_double(points[T.v[0]].x()), ay = CGAL::to_double(points[T.v[0]].y());
+      const double bx = CGAL::to_double(points[T.v[1]].x()), by = CGAL::to_double(points[T.v[1]].y());
+      const double cx = CGAL::to_double(points[T.v[2]].x()), cy = CGAL::to_double(points[T.v[2]].y());
+      const double area = (bx - ax) * (cy - ay) - (by - ay) * (cx - ax);
+      if(area > best) {
+        best = area;
+        start = int(t);
+      }
+    }
+    return start;
+  }
+
+  Engine& engine_;
+  std::vector<Triangle> triangles_;
+  std::vector<std::vector<int> > steps_;   // triangles added by each step
+  std::vector<char> added_;
+  std::vector<std::array<int, 3> > sides_; // boundary half-edge of each side of each added triangle
+};
+
+} // namespace internal
+} // namespace Progressive_medial_axes
+} // namespace CGAL
+
+#endif // CGAL_PROGRESSIVE_MEDIAL_AXIS_2_INTERNAL_REGION_GROWING_H

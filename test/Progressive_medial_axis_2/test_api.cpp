@@ -1,0 +1,400 @@
+// The public C++ interface as a CGAL user meets it: every public overload
+// and accessor, with the kernels a user has (Epick, Epeck,
+// Epeck_with_sqrt), simple polygons and polygons with holes, one-shot and
+// progressive use, navigation by handles, and the fixed bugs of issue 8,
+// each checked through the public interface only.
+//
+//   test_api [TOOL DATA_DIR]      (with the tool: current_shape() against --shape-out)
+//   test_api --threads            (only the concurrency part, for ThreadSanitizer)
+
+#include <CGAL/Progressive_medial_axis_2.h>
+#include <CGAL/Progressive_medial_axis_2/Accuracy.h>
+#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
+#include <CGAL/Exact_predicates_exact_constructions_kernel_with_sqrt.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Simple_cartesian.h>
+#include <CGAL/CORE_Expr.h>
+
+#include <pma_test/check.h>
+#include <pma_test/random_polygons.h>
+#include <pma_tool/medial_axis_io.h>
+#include <pma_tool/polygon_io.h>
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <iostream>
+#include <list>
+#include <map>
+#include <set>
+#include <sstream>
+#include <string>
+#include <thread>
+#include <unistd.h>
+#include <vector>
+
+namespace {
+
+typedef CGAL::Exact_predicates_inexact_constructions_kernel Epick;
+typedef CGAL::Exact_predicates_exact_constructions_kernel Epeck;
+typedef CGAL::Exact_predicates_exact_constructions_kernel_with_sqrt Epeck_sqrt;
+
+// The L-shaped hexagon: one reflex vertex at (1, 1).
+template <class K>
+CGAL::Polygon_2<K> l_shape()
+{
+  CGAL::Polygon_2<K> p;
+  const int xy[6][2] = {{0, 0}, {2, 0}, {2, 1}, {1, 1}, {1, 2}, {0, 2}};
+  for(const auto& c : xy) p.push_back(typename K::Point_2(c[0], c[1]));
+  return p;
+}
+
+// A 10 x 6 plate with two holes.
+template <class K>
+CGAL::Polygon_with_holes_2<K> plate()
+{
+  typedef typename K::Point_2 P;
+  CGAL::Polygon_2<K> outer, a, b;
+  for(const P& p : {P(0, 0), P(10, 0), P(10, 6), P(0, 6)}) outer.push_back(p);
+  for(const P& p : {P(2, 2), P(2, 4), P(4, 4), P(4, 2)}) a.push_back(p);
+  for(const P& p : {P(6, 2), P(7, 4), P(8, 2)}) b.push_back(p);
+  CGAL::Polygon_with_holes_2<K> r(outer);
+  r.add_hole(a);
+  r.add_hole(b);
+  return r;
+}
+
+// The set of named curves of an axis (names of the complete axis).
+template <class MA>
+std::multiset<std::string> pairs(const MA& ma)
+{
+  pma_tool::Generator_names<MA> names(ma, pma_tool::Generator_names<MA>::INPUT);
+  std::multiset<std::string> out;
+  for(const auto& c : pma_tool::named_curves(ma, names)) out.insert(c.a + " " + c.b);
+  return out;
+}
+
+// One-shot and progressive computation with input of kernel K, both with
+// default traits, against the Epick reference.
+template <class K>
+void kernels_case(const char* name, const std::multiset<std::string>& simple_ref,
+                  const std::multiset<std::string>& holes_ref)
+{
+  const auto a = CGAL::medial_axis_2(l_shape<K>());
+  CHECK(pairs(a) == simple_ref, name << ": one-shot, simple polygon");
+  const auto b = CGAL::medial_axis_2(plate<K>());
+  CHECK(pairs(b) == holes_ref, name << ": one-shot, polygon with holes");
+  CGAL::Progressive_medial_axis_2<> p(plate<K>());
+  p.refine_all();
+  CHECK(pairs(p.medial_axis()) == holes_ref, name << ": progressive with default traits");
+  // a range of rings of points of K
+  std::vector<std::vector<typename K::Point_2> > rings(1);
+  for(const auto& q : l_shape<K>()) rings[0].push_back(q);
+  CHECK(pairs(CGAL::medial_axis_2(rings)) == simple_ref, name << ": one-shot from a range of rings");
+}
+
+void kernels()
+{
+  const auto simple_ref = pairs(CGAL::medial_axis_2(l_shape<Epick>()));
+  const auto holes_ref = pairs(CGAL::medial_axis_2(plate<Epick>()));
+  CHECK(simple_ref.size() == 9, "the L shape has 9 medial curves (as the oracle says), got " << simple_ref.size());
+  kernels_case<Epeck>("Epeck input", simple_ref, holes_ref);
+  kernels_case<Epeck_sqrt>("Epeck_with_sqrt input", simple_ref, holes_ref);
+  // the traits over each kernel
+  typedef CGAL::Progressive_medial_axis_traits_2<Epeck> Epeck_traits;
+  const CGAL::Medial_axis_2<Epeck> e = CGAL::medial_axis_2(plate<Epeck>(), Epeck_traits());
+  CHECK(pairs(e) == holes_ref, "Epeck traits");
+  static_assert(Epeck_traits::Has_exact_decisions, "Epeck traits decide exactly");
+  static_assert(CGAL::Progressive_medial_axis_traits_2<Epick>::Has_exact_decisions, "Epick traits decide exactly");
+  static_assert(!CGAL::Progressive_medial_axis_traits_2<CGAL::Simple_cartesian<double> >::Has_exact_decisions,
+                "the double model is asked for explicitly");
+  typedef CGAL::Progressive_medial_axis_traits_2<CGAL::Simple_cartesian<double> > Double_traits;
+  CHECK(pairs(CGAL::medial_axis_2(plate<Epick>(), Double_traits())) == holes_ref, "double model");
+  typedef CGAL::Progressive_medial_axis_traits_2<CGAL::Simple_cartesian<CORE::Expr> > Core_traits;
+  CHECK(pairs(CGAL::medial_axis_2(l_shape<Epick>(), Core_traits())) == simple_ref, "CORE::Expr model");
+  // a polygon with another container
+  CGAL::Polygon_2<Epick, std::list<Epick::Point_2> > listed;
+  for(const auto& q : l_shape<Epick>()) listed.push_back(q);
+  CHECK(pairs(CGAL::medial_axis_2(listed)) == simple_ref, "Polygon_2 with a std::list container");
+  // exact input whose points round to one double: an error, not a crash
+  std::vector<std::vector<Epeck::Point_2> > close(1);
+  close[0] = {Epeck::Point_2(0, 0), Epeck::Point_2(4, 0), Epeck::Point_2(Epeck::FT(2) + Epeck::FT(1e-30), 2),
+              Epeck::Point_2(2, 2), Epeck::Point_2(0, 4)};
+  bool error = false;
+  try {
+    CGAL::medial_axis_2(close);   // default traits of Epeck: exact coordinates, valid polygon
+  } catch(const CGAL::Progressive_medial_axes::Input_error&) {
+    error = true;
+  }
+  CHECK(!error, "exact input with points 1e-30 apart is valid with Epeck traits");
+  error = false;
+  try {
+    CGAL::medial_axis_2(close, CGAL::Progressive_medial_axis_traits_2<Epick>());
+  } catch(const CGAL::Progressive_medial_axes::Input_error& e) {
+    error = std::string(e.what()).find("zero-length edge: ring 0") != std::string::npos;
+  }
+  CHECK(error, "consecutive points that round to one double are reported with Epick traits");
+}
+
+// Navigation by handles, on the plate.
+void navigation()
+{
+  const auto ma = CGAL::medial_axis_2(plate<Epick>());
+  typedef std::remove_const<decltype(ma)>::type MA;
+  std::size_t faces = 0, medial = 0;
+  for(const auto& f : ma.faces()) {
+    ++faces;
+    // the cell boundary is a cycle; each half-edge has f on its left
+    const auto ccb = f.ccb();
+    CHECK(!ccb.empty(), "a cell has a boundary");
+    for(std::size_t i = 0; i < ccb.size(); ++i) {
+      CHECK(ccb[i].face() == f, "half-edge of the cell's boundary has the cell on its left");
+      CHECK(ccb[i].next() == ccb[(i + 1) % ccb.size()], "next() walks the cell");
+      CHECK(ccb[i].next().prev() == ccb[i], "prev() undoes next()");
+      CHECK(ccb[i].opposite().opposite() == ccb[i], "opposite() is an involution");
+      CHECK(ccb[i].target() == ccb[(i + 1) % ccb.size()].source(), "consecutive half-edges meet");
+      if(ccb[i].kind() == MA::MEDIAL_CURVE) ++medial;
+    }
+    int own = 0;
+    for(const auto& h : ccb) own += (h.kind() == MA::BOUNDARY_EDGE);
+    CHECK(own == (f.is_point() ? 0 : 1), "a segment's cell holds its segment, a point's none: " << f.id());
+  }
+  CHECK(faces == ma.number_of_faces(), "faces()");
+  CHECK(medial == 2 * ma.number_of_edges(), "every medial curve bounds two cells");
+  // around every vertex: counter-clockwise, consistent with the cells
+  for(const auto& v : ma.vertices()) {
+    const auto in = v.incident_halfedges();
+    CHECK(int(in.size()) >= v.degree(), "incident half-edges include the curves");
+    for(const auto& h : in) CHECK(h.target() == v, "incident half-edges end at the vertex");
+    const auto gens = v.generators();
+    CHECK(gens.size() >= 1, "a vertex touches cells");
+  }
+  // one cycle per hole
+  CHECK(long(ma.number_of_edges()) - long(ma.number_of_vertices()) + 1 == 2, "two holes, two cycles");
+  // handles stay valid when the axis moves
+  MA moved;
+  std::vector<MA::Vertex_handle> before;
+  for(const auto& v : ma.vertices()) before.push_back(v);
+  const auto p0 = before.front().point();
+  MA copy = ma;
+  moved = std::move(copy);
+  CHECK(before.front().point() == p0, "handles stay valid after the axis is moved");
+  CHECK(moved.number_of_edges() == ma.number_of_edges(), "a moved axis is the same axis");
+  CHECK(MA().number_of_vertices() == 0 && MA().number_of_edges() == 0, "an empty axis");
+}
+
+// Vertex::generators() is counter-clockwise: on the L shape, the branch
+// point (1.5, 0.5) touches e0.0 (below), e0.1 (right), e0.2 (above).
+void generators_counter_clockwise()
+{
+  const auto ma = CGAL::medial_axis_2(l_shape<Epick>());
+  bool found = false;
+  for(const auto& v : ma.vertices()) {
+    if(v.point() != Epick::Point_2(1.5, 0.5)) continue;
+    found = true;
+    std::vector<std::string> g;
+    for(const auto& f : v.generators()) g.push_back(f.id());
+    CHECK(g.size() == 3, "degree 3");
+    const std::string s = g[0] + " " + g[1] + " " + g[2];
+    CHECK(s == "e0.0 e0.1 e0.2" || s == "e0.1 e0.2 e0.0" || s == "e0.2 e0.0 e0.1",
+          "generators counter-clockwise: got " << s);
+  }
+  CHECK(found, "the branch point (1.5, 0.5)");
+}
+
+// A point where four generators meet (the centre of a square) is one vertex.
+void degree_four()
+{
+  CGAL::Polygon_2<Epick> square;
+  for(const auto& p : {Epick::Point_2(0, 0), Epick::Point_2(2, 0), Epick::Point_2(2, 2), Epick::Point_2(0, 2)})
+    square.push_back(p);
+  const auto ma = CGAL::medial_axis_2(square);
+  typedef std::remove_const<decltype(ma)>::type MA;
+  int branch = 0;
+  for(const auto& v : ma.vertices()) {
+    if(v.kind() != MA::BRANCH_POINT) continue;
+    ++branch;
+    CHECK(v.degree() == 4 && v.generators().size() == 4, "the centre has degree 4");
+    CHECK(v.point() == Epick::Point_2(1, 1) && v.radius() == 1, "the centre and its radius");
+  }
+  CHECK(branch == 1, "one branch point, got " << branch);
+  CHECK(ma.number_of_edges() == 4, "four curves, got " << ma.number_of_edges());
+}
+
+// Curves: polylines within tolerance, no silent cap, lengths far from 1.
+void curves()
+{
+  const auto ma = CGAL::medial_axis_2(l_shape<Epick>());
+  typedef std::remove_const<decltype(ma)>::type MA;
+  for(const auto& e : ma.edges()) {
+    if(e.curve_kind() != MA::PARABOLIC_ARC) continue;
+    CHECK(e.polyline(0).size() > 2, "polyline(0) is not the chord of a parabola");
+    CHECK(e.polyline(1e-12).size() > 10000, "a fine polyline is not capped at 10,000 points");
+    CHECK(std::fabs(e.length() - 0.42577062416473832) < 1e-12, "parabola length, got " << e.length());
+  }
+  double reference = 0;
+  for(const auto& e : ma.edges()) reference += e.length();
+  for(double scale : {1e300, 1e-300}) {
+    CGAL::Polygon_2<Epick> p;
+    for(const auto& q : l_shape<Epick>()) p.push_back(Epick::Point_2(q.x() * scale, q.y() * scale));
+    const auto big = CGAL::medial_axis_2(p);
+    double total = 0;
+    for(const auto& e : big.edges()) {
+      CHECK(std::isfinite(e.length()) && e.length() > 0, "length at scale " << scale << ": " << e.length());
+      total += e.length() / scale;
+      for(const auto& q : e.polyline(1e-3 * scale))
+        CHECK(std::isfinite(q.first) && std::isfinite(q.second), "polyline at scale " << scale);
+    }
+    CHECK(std::fabs(total - reference) < 1e-12 * reference,
+          "scale-invariant total length at scale " << scale << ": " << total << " vs " << reference);
+  }
+}
+
+// The progressive object: steps, current_shape() with its holes at every
+// step, release.
+void progressive(const std::string& tool, const std::string& data)
+{
+  // many holes: a hole cycle can come before the outer one
+  const auto rings = pma_test::random_polygon_with_holes(11, 12, 30);
+  CGAL::Progressive_medial_axis_2<> pma(rings);
+  std::size_t wrong = 0;
+  do {
+    const auto shape = pma.current_shape();
+    const auto axis_rings = pma.medial_axis().shape_rings();
+    if(shape.number_of_holes() + 1 != axis_rings.size()) ++wrong;
+    if(shape.outer_boundary().orientation() != CGAL::COUNTERCLOCKWISE) ++wrong;
+    for(auto h = shape.holes_begin(); h != shape.holes_end(); ++h)
+      if(h->orientation() != CGAL::CLOCKWISE) ++wrong;
+    const long cycles = long(pma.medial_axis().number_of_edges()) - long(pma.medial_axis().number_of_vertices()) + 1;
+    if(cycles != long(shape.number_of_holes())) ++wrong;
+  } while(pma.refine());
+  CHECK(wrong == 0, wrong << " steps with a wrong current_shape()");
+  CHECK(pma.current_shape().number_of_holes() == 30, "the final shape has the 30 holes");
+  CHECK(pma.is_complete() && !pma.is_released(), "complete");
+  const std::size_t steps = pma.number_of_steps();
+  const auto axis = pma.release_medial_axis();
+  CHECK(axis.number_of_edges() > 0, "the released axis");
+  CHECK(pma.is_released() && pma.number_of_steps() == steps && pma.current_step() == steps,
+        "after release: steps kept, released");
+  CHECK(!pma.refine(), "a released object is not refined");
+
+  // refine_to, statistics, the visitor
+  struct Counter : CGAL::Default_progressive_medial_axis_visitor {
+    std::size_t switches = 0, vanishings = 0, merges = 0, steps = 0;
+    void on_switch() { ++switches; }
+    void on_vanish() { ++vanishings; }
+    void on_merge(const CGAL::Progressive_medial_axes::Merge_statistics&) { ++merges; }
+    void on_step(std::size_t, std::size_t) { ++steps; }
+  } counter;
+  CGAL::Progressive_medial_axis_2<> p2(plate<Epick>(), CGAL::Progressive_medial_axis_traits_2<Epick>(), CGAL::TRUST_INPUT);
+  p2.refine_to(3);
+  CHECK(p2.current_step() == 3, "refine_to");
+  p2.refine_all(counter);
+  CHECK(counter.steps == p2.number_of_steps() - 3, "visitor steps");
+  CHECK(counter.switches + counter.vanishings > 0 && counter.merges >= counter.steps, "visitor events");
+  const auto& s = p2.statistics();
+  CHECK(s.input_vertices == 11 && s.holes == 2 && s.triangles > 0 && s.validation_seconds == 0,
+        "statistics (input not validated)");
+
+  // the shape at a step equals the tool's --shape-out
+  if(!tool.empty()) {
+    const std::string file = data + "/syn_cheese1k.wkt";
+    const auto input = pma_tool::read_polygon_file<Epick::Point_2>(file);
+    CGAL::Progressive_medial_axis_2<> p3(input);
+    char dir[] = "/tmp/pma_api_XXXXXX";
+    CHECK(mkdtemp(dir) != nullptr, "temporary directory");
+    for(std::size_t k : {std::size_t(5), p3.number_of_steps() / 3, p3.number_of_steps() - 1}) {
+      p3.refine_to(k);
+      const std::string out = std::string(dir) + "/shape.wkt";
+      const std::string cmd = tool + " --step " + std::to_string(k) + " --shape-out " + out + " " + file;
+      CHECK(std::system(cmd.c_str()) == 0, cmd);
+      const auto theirs = pma_tool::read_polygon_file<Epick::Point_2>(out);
+      const auto ours = p3.current_shape();
+      CHECK(theirs.size() == ours.number_of_holes() + 1, "step " << k << ": rings");
+      std::vector<std::vector<Epick::Point_2> > mine{std::vector<Epick::Point_2>(ours.outer_boundary().begin(),
+                                                                                 ours.outer_boundary().end())};
+      for(auto h = ours.holes_begin(); h != ours.holes_end(); ++h) mine.emplace_back(h->begin(), h->end());
+      CHECK(mine == theirs, "step " << k << ": current_shape() equals the tool's --shape-out");
+    }
+    std::remove((std::string(dir) + "/shape.wkt").c_str());
+    rmdir(dir);
+  }
+}
+
+// Accuracy: E(x) of the exact model equals its floor.
+void accuracy()
+{
+  const auto ma = CGAL::medial_axis_2(plate<Epick>());
+  const auto e = CGAL::Progressive_medial_axes::branch_point_errors(ma);
+  const auto f = CGAL::Progressive_medial_axes::floor_branch_point_errors(ma);
+  CHECK(!e.empty() && e.size() == f.size(), "one E(x) per branch point");
+  const auto s = CGAL::Progressive_medial_axes::accuracy_statistics(e);
+  CHECK(s.count == e.size() && s.max < 1e-12, "E(x) of exact branch points: " << s.max);
+  CHECK(CGAL::Progressive_medial_axes::medial_point_error(1, 1, {{false, 0, 0, 2, 0}, {false, 2, 2, 0, 2}}) == 0,
+        "E(x) of the centre of a strip");
+}
+
+// Bad input: a clear error.
+void bad_input()
+{
+  std::vector<std::vector<Epick::Point_2> > bowtie{{Epick::Point_2(0, 0), Epick::Point_2(1, 1), Epick::Point_2(1, 0),
+                                                    Epick::Point_2(0, 1)}};
+  bool error = false;
+  try {
+    CGAL::Progressive_medial_axes::validate_polygon(bowtie);
+  } catch(const CGAL::Progressive_medial_axes::Input_error& e) {
+    error = e.ring() == 0 && std::string(e.what()).find("ring 0") != std::string::npos;
+  }
+  CHECK(error, "validate_polygon() names the ring");
+}
+
+// Concurrency: 4 threads read one result, 4 threads build 4 results.
+void threads()
+{
+  const auto rings = pma_test::random_polygon_with_holes(5, 20, 12);
+  CGAL::Progressive_medial_axis_2<> shared(rings);
+  shared.refine_to(shared.number_of_steps() / 2);
+  const auto& ma = shared.medial_axis();
+  std::vector<double> sums(8, 0);
+  std::vector<std::thread> pool;
+  for(int t = 0; t < 4; ++t)
+    pool.emplace_back([&, t] {
+      double s = 0;
+      for(const auto& v : ma.vertices()) s += CGAL::to_double(v.radius()) + v.degree();
+      for(const auto& e : ma.edges()) s += e.length();
+      sums[t] = s;
+    });
+  for(int t = 4; t < 8; ++t)
+    pool.emplace_back([&, t] {
+      const auto r = pma_test::random_polygon_with_holes(100 + t, 16, 8);
+      CGAL::Progressive_medial_axis_2<> own(r);
+      own.refine_all();
+      double s = 0;
+      for(const auto& e : own.medial_axis().edges()) s += e.length();
+      sums[t] = s;
+    });
+  for(auto& th : pool) th.join();
+  CHECK(sums[0] == sums[1] && sums[1] == sums[2] && sums[2] == sums[3], "concurrent readers agree");
+  for(int t = 4; t < 8; ++t) CHECK(sums[t] > 0, "concurrent builders");
+}
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+  if(argc > 1 && std::string(argv[1]) == "--threads") {
+    threads();
+    return pma_test::report("test_api --threads");
+  }
+  kernels();
+  navigation();
+  generators_counter_clockwise();
+  degree_four();
+  curves();
+  progressive(argc > 2 ? argv[1] : "", argc > 2 ? argv[2] : "");
+  accuracy();
+  bad_input();
+  threads();
+  return pma_test::report("test_api");
+}

@@ -1,0 +1,212 @@
+// Copyright (c) 2026 The Progressive_medial_axis_2 authors.
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+//
+// The command-line tool's names and text output of a medial axis (not part
+// of the library): canonical generator ids, the list of medial curves and
+// of branch points.  Written on the public interface of Medial_axis_2.
+
+#ifndef PMA_TOOL_MEDIAL_AXIS_IO_H
+#define PMA_TOOL_MEDIAL_AXIS_IO_H
+
+#include <CGAL/Progressive_medial_axis_2/Medial_axis_2.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <map>
+#include <ostream>
+#include <set>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace pma_tool {
+
+/*
+Canonical names of the generators of a medial axis (package documentation,
+"Canonical ids"): `e<r>.<i>` for the edge from vertex i to vertex i+1 of ring
+r, `v<r>.<i>` for the reflex vertex i of ring r.
+
+In `INPUT` mode the rings and vertex indices are those of the input polygon
+(valid once the axis is complete).  In `SHAPE` mode they are those of the
+shape whose axis this is, as returned by `Medial_axis_2::shape_rings()`:
+ring 0 its outer boundary counter-clockwise from its vertex of smallest input
+index, then its holes clockwise from their vertex of smallest input index,
+in the order of that index.  Intermediate steps of a progressive
+computation must be named in `SHAPE` mode.
+*/
+template <class Medial_axis>
+class Generator_names
+{
+public:
+  typedef typename Medial_axis::Input_vertex Input_vertex;
+  enum Mode { INPUT, SHAPE };
+
+  Generator_names(const Medial_axis& ma, Mode mode) : mode_(mode)
+  {
+    if(mode == SHAPE) {
+      rings_ = ma.shape_rings();
+      for(std::size_t r = 0; r < rings_.size(); ++r)
+        for(std::size_t i = 0; i < rings_[r].size(); ++i) position_[rings_[r][i]] = std::make_pair(int(r), int(i));
+    }
+  }
+
+  std::string operator()(const typename Medial_axis::Face_handle& g) const
+  {
+    if(mode_ == INPUT)
+      return g.id();
+    const auto& pos = position_.at(g.source_vertex());
+    return (g.is_point() ? "v" : "e") + std::to_string(pos.first) + "." + std::to_string(pos.second);
+  }
+
+  /// The shape's rings (SHAPE mode).
+  const std::vector<std::vector<Input_vertex> >& rings() const { return rings_; }
+
+private:
+  Mode mode_;
+  std::vector<std::vector<Input_vertex> > rings_;
+  std::map<Input_vertex, std::pair<int, int> > position_;
+};
+
+/// One medial curve, named.
+struct Named_curve {
+  std::string a, b;   // a < b
+  double length;
+};
+
+/// One branch point, named: its generators sorted, its centre and radius.
+struct Named_branch {
+  std::vector<std::string> generators;
+  double x, y, r;
+};
+
+/// The medial curves of `ma`, sorted.
+template <class Medial_axis, class Names>
+std::vector<Named_curve> named_curves(const Medial_axis& ma, const Names& names)
+{
+  std::vector<Named_curve> out;
+  for(const auto& e : ma.edges()) {
+    std::string a = names(e.first_generator()), b = names(e.second_generator());
+    if(b < a) std::swap(a, b);
+    out.push_back(Named_curve{a, b, e.length()});
+  }
+  std::sort(out.begin(), out.end(), [](const Named_curve& x, const Named_curve& y) {
+    if(x.a != y.a) return x.a < y.a;
+    if(x.b != y.b) return x.b < y.b;
+    return x.length < y.length;
+  });
+  return out;
+}
+
+/// The branch points of `ma` (vertices where three or more curves meet).
+/// Branch points joined by a curve shorter than `merge_distance` are
+/// reported once, with all their generators (a point where four or more
+/// generators meet is one vertex already; this also merges the nearly
+/// coincident vertices of the double model).
+template <class Medial_axis, class Names>
+std::vector<Named_branch> named_branches(const Medial_axis& ma, const Names& names, double merge_distance)
+{
+  typedef typename Medial_axis::Vertex_handle Vertex;
+  std::map<Vertex, Vertex> parent;
+  for(const auto& v : ma.vertices())
+    if(v.kind() == Medial_axis::BRANCH_POINT) parent[v] = v;
+  auto find = [&](Vertex x) {
+    while(parent[x] != x) x = parent[x] = parent[parent[x]];
+    return x;
+  };
+  for(const auto& e : ma.edges()) {
+    const Vertex s = e.source(), t = e.target();
+    if(parent.count(s) && parent.count(t) && e.length() <= merge_distance) parent[find(s)] = find(t);
+  }
+  std::map<Vertex, std::set<std::string> > groups;
+  for(const auto& kv : parent) {
+    auto& g = groups[find(kv.first)];
+    for(const auto& gen : kv.first.generators()) g.insert(names(gen));
+  }
+  std::vector<Named_branch> out;
+  for(const auto& kv : groups) {
+    auto p = Medial_axis::to_xy(kv.first.point());
+    out.push_back(Named_branch{std::vector<std::string>(kv.second.begin(), kv.second.end()), p.first, p.second,
+                               CGAL::to_double(kv.first.radius())});
+  }
+  std::sort(out.begin(), out.end(), [](const Named_branch& x, const Named_branch& y) {
+    if(x.generators != y.generators) return x.generators < y.generators;
+    return std::make_pair(x.x, x.y) < std::make_pair(y.x, y.y);
+  });
+  return out;
+}
+
+inline std::string format_double(double v)
+{
+  char buf[40];
+  std::snprintf(buf, sizeof(buf), "%.17g", v);
+  return buf;
+}
+
+/// Writes one line `pair A B L` per medial curve.
+inline void write_pairs(std::ostream& out, const std::vector<Named_curve>& curves)
+{
+  for(const Named_curve& c : curves)
+    out << "pair " << c.a << ' ' << c.b << ' ' << format_double(c.length) << '\n';
+}
+
+/// Writes one line `branch A B C ... x y r` per branch point.
+inline void write_branches(std::ostream& out, const std::vector<Named_branch>& branches)
+{
+  for(const Named_branch& b : branches) {
+    out << "branch";
+    for(const std::string& g : b.generators) out << ' ' << g;
+    out << ' ' << format_double(b.x) << ' ' << format_double(b.y) << ' ' << format_double(b.r) << '\n';
+  }
+}
+
+/// Bounding box of points given as doubles.
+struct Box {
+  double x0 = 1e300, y0 = 1e300, x1 = -1e300, y1 = -1e300;
+  void add(double x, double y)
+  {
+    x0 = (std::min)(x0, x); x1 = (std::max)(x1, x);
+    y0 = (std::min)(y0, y); y1 = (std::max)(y1, y);
+  }
+  double diagonal() const { return std::hypot(x1 - x0, y1 - y0); }
+};
+
+/// The box of the input polygon of `ma`.
+template <class Medial_axis>
+Box input_box(const Medial_axis& ma)
+{
+  Box b;
+  for(std::size_t r = 0; r < ma.number_of_input_rings(); ++r)
+    for(std::size_t i = 0; i < ma.input_ring_size(r); ++i) {
+      typename Medial_axis::Input_vertex v;
+      v.ring = int(r);
+      v.index = int(i);
+      auto p = Medial_axis::to_xy(ma.point(v));
+      b.add(p.first, p.second);
+    }
+  return b;
+}
+
+/// The box of the shape of `ma` (at a step, the current shape).
+template <class Medial_axis>
+Box shape_box(const Medial_axis& ma)
+{
+  Box b;
+  for(const auto& ring : ma.shape_rings())
+    for(const auto& v : ring) {
+      auto p = Medial_axis::to_xy(ma.point(v));
+      b.add(p.first, p.second);
+    }
+  return b;
+}
+
+/// Diagonal of the bounding box of the input polygon.
+template <class Medial_axis>
+double bbox_diagonal(const Medial_axis& ma)
+{
+  return input_box(ma).diagonal();
+}
+
+} // namespace pma_tool
+
+#endif // PMA_TOOL_MEDIAL_AXIS_IO_H
