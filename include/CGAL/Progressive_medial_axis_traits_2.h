@@ -29,6 +29,7 @@
 #include <CGAL/Gmpq.h>
 #include <CGAL/Interval_nt.h>
 #include <CGAL/Lazy_exact_nt.h>
+#include <CGAL/CORE_Expr.h>
 #include <CGAL/enum.h>
 #include <CGAL/number_utils.h>
 
@@ -64,6 +65,25 @@ struct Site {
   {
     if(a.is_point != b.is_point) return false;
     return a.is_point ? a.p == b.p : (a.p == b.p && a.q == b.q);
+  }
+};
+
+/// The square root of a CORE::Expr (non-negative).  CORE's floating filter
+/// writes a warning into a file `Core_Diagnostics` of the current directory
+/// when it takes the root of a node whose double approximation is negative,
+/// which happens for a positive number that is tiny against the rounding
+/// error of its computation.  The node's filter is then replaced by an
+/// approximation 0 with an error bound of 1e300 (true, if useless: CORE
+/// then evaluates the node exactly when its sign is needed), and the root
+/// is taken without the warning.
+template <>
+struct Sqrt_hook<CORE::Expr> {
+  static CORE::Expr apply(const CORE::Expr& x)
+  {
+    CORE::ExprRep& rep = const_cast<CORE::ExprRep&>(x.getRep());
+    if(rep.ffVal.getValue() < 0.0 && x.sign() >= 0)
+      rep.ffVal = CORE::filteredFp(0.0, 1e300, 1);
+    return CORE::sqrt(x);
   }
 };
 
@@ -457,10 +477,16 @@ private:
                                          Progressive_medial_axes::internal::site_nt<FT>(s[2], cv)};
     Progressive_medial_axes::internal::Circle_nt<FT> circle;
     if constexpr(Floating) {
-      // a vertex whose double construction is implausible is built by the
-      // exact-decision model (double-double once its branches are decided)
-      if(!Progressive_medial_axes::internal::medial_circle(sn, rel, circle) ||
-         !Progressive_medial_axes::internal::plausible_circle(sn, rel, circle))
+      // a vertex whose double construction is implausible or ambiguous is
+      // built by the exact-decision model (double-double once its branches
+      // are decided)
+      bool built = false;
+      try {
+        built = Progressive_medial_axes::internal::medial_circle(sn, rel, circle) &&
+                Progressive_medial_axes::internal::plausible_circle(sn, rel, circle);
+      } catch(Progressive_medial_axes::internal::Uncertain_decision&) {
+      }
+      if(!built)
         return Filtered_model<K>::disk(s, centre, radius);
     } else {
       if(!Progressive_medial_axes::internal::medial_circle(sn, rel, circle))

@@ -4,9 +4,9 @@ add_test(NAME oracle_filtered COMMAND test_medial_axis_oracle --only regressions
 # Degenerate input (integer grids, Hilbert, Koch, regular polygons, glyphs):
 # every exact tie decided, against the oracle.
 add_test(NAME oracle_degenerate COMMAND test_medial_axis_oracle --only degenerate)
-# The double-precision model is not exact: its decisions on the nearly
-# degenerate sliver (edges 1e-10 off a line) differ from the exact ones.
-add_test(NAME oracle_epick COMMAND test_medial_axis_oracle --traits epick --quick --skip syn_sliver500)
+# The double-precision model: its promise (the exact topology, merges with
+# uncertain decisions redone exactly) on the data and degenerate shapes too.
+add_test(NAME oracle_epick COMMAND test_medial_axis_oracle --traits epick --quick)
 add_test(NAME oracle_exact COMMAND test_medial_axis_oracle --traits exact --quick --only random)
 set_tests_properties(oracle_filtered oracle_degenerate oracle_epick oracle_exact PROPERTIES TIMEOUT 1800)
 
@@ -29,3 +29,17 @@ add_test(NAME number_types COMMAND test_number_types)
 # the kernels, navigation, the fixed bugs), with the tool for --shape-out.
 pma_add_test_program(test_api)
 add_test(NAME api COMMAND test_api $<TARGET_FILE:progressive_medial_axis> ${PMA_TEST_DATA})
+
+# ThreadSanitizer: 4 threads read one result while 4 threads build 4 results
+# (test_api --threads), in a build of its own with -fsanitize=thread.
+option(PMA_SANITIZER_TESTS "Build and run the tests under sanitizers" ON)
+if(PMA_SANITIZER_TESTS AND CMAKE_CXX_COMPILER_ID MATCHES "GNU|Clang")
+  add_executable(test_api_tsan test_api.cpp)
+  target_link_libraries(test_api_tsan PRIVATE pma_tool)
+  target_include_directories(test_api_tsan PRIVATE ${CMAKE_CURRENT_SOURCE_DIR}/include)
+  target_compile_definitions(test_api_tsan PRIVATE PMA_TEST_DATA="${PMA_TEST_DATA}")
+  target_compile_options(test_api_tsan PRIVATE -fsanitize=thread -O1 -g)
+  target_link_options(test_api_tsan PRIVATE -fsanitize=thread)
+  add_test(NAME api_threads_tsan COMMAND test_api_tsan --threads)
+  set_tests_properties(api_threads_tsan PROPERTIES ENVIRONMENT "TSAN_OPTIONS=halt_on_error=1 exitcode=66")
+endif()

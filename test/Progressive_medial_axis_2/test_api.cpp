@@ -36,6 +36,8 @@
 
 namespace {
 
+std::string data_dir;   // the test data (second argument)
+
 typedef CGAL::Exact_predicates_inexact_constructions_kernel Epick;
 typedef CGAL::Exact_predicates_exact_constructions_kernel Epeck;
 typedef CGAL::Exact_predicates_exact_constructions_kernel_with_sqrt Epeck_sqrt;
@@ -113,6 +115,20 @@ void kernels()
   CHECK(pairs(CGAL::medial_axis_2(plate<Epick>(), Double_traits())) == holes_ref, "double model");
   typedef CGAL::Progressive_medial_axis_traits_2<CGAL::Simple_cartesian<CORE::Expr> > Core_traits;
   CHECK(pairs(CGAL::medial_axis_2(l_shape<Epick>(), Core_traits())) == simple_ref, "CORE::Expr model");
+  // the CORE::Expr model writes no Core_Diagnostics file into the working
+  // directory (syn_ngon64, a regular 64-gon, used to)
+  if(!data_dir.empty()) {
+    char dir[] = "/tmp/pma_api_core_XXXXXX";
+    char cwd[4096];
+    const auto ngon = pma_tool::read_polygon_file<Epick::Point_2>(data_dir + "/syn_ngon64.wkt");
+    CHECK(mkdtemp(dir) != nullptr && getcwd(cwd, sizeof(cwd)) != nullptr && chdir(dir) == 0, "temporary directory");
+    const auto exact = CGAL::medial_axis_2(ngon, Core_traits());
+    CHECK(exact.number_of_edges() == CGAL::medial_axis_2(ngon).number_of_edges(), "CORE::Expr model on a 64-gon");
+    CHECK(access("Core_Diagnostics", F_OK) != 0, "the CORE::Expr model wrote a Core_Diagnostics file");
+    std::remove("Core_Diagnostics");
+    CHECK(chdir(cwd) == 0, "back to the working directory");
+    rmdir(dir);
+  }
   // a polygon with another container
   CGAL::Polygon_2<Epick, std::list<Epick::Point_2> > listed;
   for(const auto& q : l_shape<Epick>()) listed.push_back(q);
@@ -387,6 +403,7 @@ int main(int argc, char** argv)
     threads();
     return pma_test::report("test_api --threads");
   }
+  if(argc > 2) data_dir = argv[2];
   kernels();
   navigation();
   generators_counter_clockwise();

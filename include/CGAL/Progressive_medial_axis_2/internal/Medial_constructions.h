@@ -20,11 +20,31 @@
 #include <CGAL/number_utils.h>
 #include <CGAL/Uncertain.h>
 
+#include <cmath>
 #include <type_traits>
 
 namespace CGAL {
 namespace Progressive_medial_axes {
 namespace internal {
+
+/// Thrown by the double-precision model when a decision is too close to
+/// call (a near tie, an implausible circle, an ambiguous branch of a
+/// construction): the merge is then redone with exact decisions.
+struct Uncertain_decision {};
+
+/// In double precision, a sign that rounding can have flipped: |x| within a
+/// relative 1e-9 of the magnitude of its terms.  Other number types decide
+/// exactly (intervals throw when they cannot).
+template <class NT>
+void check_sign_is_clear(const NT& x, const NT& magnitude)
+{
+  if constexpr(std::is_floating_point<NT>::value) {
+    if(!(std::fabs(x) > 1e-9 * magnitude)) throw Uncertain_decision();
+  } else {
+    (void)x;
+    (void)magnitude;
+  }
+}
 
 /// A generator in number type `NT`: a point `(ax, ay)`, or the open segment
 /// from `(ax, ay)` to `(bx, by)` whose interior side (the shape) is on its left.
@@ -38,11 +58,21 @@ struct Site_nt {
 
 // Square root and absolute value found by argument-dependent lookup, so
 // that number types outside CGAL's algebraic traits work as well.
+/// The square root of a number type, through a hook that a number type
+/// can specialise (see the CORE::Expr one in the traits).
+template <class NT>
+struct Sqrt_hook {
+  static NT apply(const NT& x)
+  {
+    using CGAL::sqrt;
+    return sqrt(x);
+  }
+};
+
 template <class NT>
 NT nt_sqrt(const NT& x)
 {
-  using CGAL::sqrt;
-  return sqrt(x);
+  return Sqrt_hook<NT>::apply(x);
 }
 
 /// Square root of a number known to be non-negative; an exact zero gives 0
@@ -126,9 +156,16 @@ bool ccw_directions(const NT& ux, const NT& uy, const NT& vx, const NT& vy,
                     const NT& wx, const NT& wy)
 {
   int positive = 0;
-  if(cross2(ux, uy, vx, vy) > 0) ++positive;
-  if(cross2(vx, vy, wx, wy) > 0) ++positive;
-  if(cross2(wx, wy, ux, uy) > 0) ++positive;
+  const NT a = cross2(ux, uy, vx, vy), b = cross2(vx, vy, wx, wy), c = cross2(wx, wy, ux, uy);
+  if constexpr(std::is_floating_point<NT>::value) {
+    const NT nu = std::sqrt(ux * ux + uy * uy), nv = std::sqrt(vx * vx + vy * vy), nw = std::sqrt(wx * wx + wy * wy);
+    check_sign_is_clear(a, nu * nv);
+    check_sign_is_clear(b, nv * nw);
+    check_sign_is_clear(c, nw * nu);
+  }
+  if(a > 0) ++positive;
+  if(b > 0) ++positive;
+  if(c > 0) ++positive;
   return positive >= 2;
 }
 
@@ -266,6 +303,7 @@ bool circle_pss(const Site_nt<NT>& p, const Site_nt<NT>& s1, const Site_nt<NT>& 
     NT r = R0 + lambda * rho;
     if(!(r > 0)) continue;
     if(!ccw_directions(xx, xy, l1.nx, l1.ny, l2.nx, l2.ny)) continue;
+    if(found) check_sign_is_clear(NT(r - best_r), NT(r + best_r));
     if(!found || r < best_r) {
       found = true;
       best_r = r;

@@ -69,6 +69,7 @@
 
 #include <CGAL/Progressive_medial_axis_2/Merge_statistics.h>
 #include <CGAL/Progressive_medial_axis_2/internal/Halfedge_structure.h>
+#include <CGAL/Progressive_medial_axis_2/internal/Medial_constructions.h>
 #include <CGAL/assertions.h>
 #include <CGAL/enum.h>
 
@@ -92,11 +93,6 @@ namespace internal {
 /// exact computation meets (a generator that should have left the list, a
 /// switch that does not match the list).  Only inexact decisions lead there.
 struct Merge_anomaly {};
-
-/// Thrown by the double-precision traits when a decision is too close to
-/// call (a near tie, an implausible circle): the merge is then redone with
-/// exact decisions.
-struct Uncertain_decision {};
 
 /// A merge visitor that does nothing; a visitor has on_switch() and
 /// on_vanish(), called at every switch and vanishing point of a merge.
