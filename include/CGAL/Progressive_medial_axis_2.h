@@ -22,6 +22,7 @@
 #include <CGAL/Progressive_medial_axis_2/internal/Input_conversion.h>
 #include <CGAL/Progressive_medial_axis_2/internal/Medial_axis_engine.h>
 #include <CGAL/Progressive_medial_axis_2/internal/Region_growing.h>
+#include <CGAL/Progressive_medial_axis_2/internal/Divide_and_conquer.h>
 
 #include <CGAL/Polygon_2.h>
 #include <CGAL/Polygon_with_holes_2.h>
@@ -30,7 +31,13 @@
 #include <cstddef>
 #include <memory>
 #include <mutex>
+#include <thread>
+#include <type_traits>
 #include <vector>
+
+#ifdef CGAL_PMA2_USE_TBB
+#include <tbb/task_arena.h>
+#endif
 
 namespace CGAL {
 
@@ -275,19 +282,136 @@ private:
   Statistics stats_;
 };
 
+namespace Progressive_medial_axes {
+namespace internal {
+
+// The counters of the stages of a filtered traits are per thread: the
+// counts of a part built by another thread are added to the caller's.
+template <class Traits, class = void>
+struct Thread_counters {
+  template <class F>
+  static void run_counted(std::thread::id, std::mutex&, const F& f) { f(); }
+};
+template <class Traits>
+struct Thread_counters<Traits, std::void_t<decltype(Traits::filter_statistics())> > {
+  typedef typename std::remove_reference<decltype(Traits::filter_statistics())>::type Counters;
+  Counters others;   // what other threads counted
+  template <class F>
+  void run_counted(std::thread::id caller, std::mutex& m, const F& f)
+  {
+    const Counters before = Traits::filter_statistics();
+    f();
+    if(std::this_thread::get_id() == caller)
+      return;
+    const Counters after = Traits::filter_statistics();
+    std::lock_guard<std::mutex> lock(m);
+    add(others, after, before);
+  }
+  void gather() { add(Traits::filter_statistics(), others, Counters()); }
+  static void add(Counters& to, const Counters& a, const Counters& b)
+  {
+    static_assert(sizeof(Counters) % sizeof(std::size_t) == 0, "counters are size_t");
+    std::size_t* t = reinterpret_cast<std::size_t*>(&to);
+    const std::size_t* x = reinterpret_cast<const std::size_t*>(&a);
+    const std::size_t* y = reinterpret_cast<const std::size_t*>(&b);
+    for(std::size_t i = 0; i < sizeof(Counters) / sizeof(std::size_t); ++i) t[i] += x[i] - y[i];
+  }
+};
+
+template <class Traits>
+Medial_axis_2<typename Traits::Kernel>
+one_shot_medial_axis(const std::vector<std::vector<typename Traits::Kernel::Point_2> >& rings, const Traits& traits,
+                     Medial_axis_input_check check, Progressive_medial_axis_statistics* statistics,
+                     std::size_t parts = 0)   // 0: a few per thread of the task arena
+{
+  typedef typename Traits::Kernel Kernel;
+  typedef Medial_axis_engine<Traits> Engine;
+  typedef typename Engine::Data Data;
+  auto seconds_since = [](std::chrono::steady_clock::time_point t) {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
+  };
+  Progressive_medial_axis_statistics stats;
+  auto t0 = std::chrono::steady_clock::now();
+  if(check == CHECK_INPUT) {
+    validate_polygon(rings);
+    stats.validation_seconds = seconds_since(t0);
+  }
+  auto data = std::make_shared<Data>();
+  set_points(*data, rings, traits.orientation_2_object());
+  stats.input_vertices = data->points.size();
+  stats.holes = rings.size() - 1;
+
+  t0 = std::chrono::steady_clock::now();
+  std::vector<Triangle> triangles = triangulate_rings<Kernel>(data->points, data->ring_start);
+  stats.triangles = triangles.size();
+  stats.triangulation_seconds = seconds_since(t0);
+
+  t0 = std::chrono::steady_clock::now();
+  // Parts run in parallel only on a kernel of doubles (Epick, or
+  // Simple_cartesian<double>): the number types of exact kernels (CORE::Expr,
+  // the lazy numbers of Epeck) share state between threads in CGAL 5.5.
+  const bool parallel = std::is_floating_point<typename Kernel::FT>::value;
+  if(parts == 0) {
+    parts = 1;
+#ifdef CGAL_PMA2_USE_TBB
+    // a few parts per thread, so that the threads stay busy to the end
+    const int threads = tbb::this_task_arena::max_concurrency();
+    if(threads > 1 && parallel) parts = 4 * std::size_t(threads);
+#endif
+  }
+  data->hds.reserve(2 * data->points.size() + 16, 4 * data->points.size() + 16);
+  Engine engine(*data, traits);
+  Divide_and_conquer<Traits> driver(engine, std::move(triangles));
+  Thread_counters<Traits> counters;
+  std::mutex mutex;
+  const std::thread::id caller = std::this_thread::get_id();
+  const Divide_and_conquer_counts counts =
+    driver.run(parts, parallel, [&](const auto& task) { counters.run_counted(caller, mutex, task); });
+  if constexpr(!std::is_empty<Thread_counters<Traits> >::value)
+    counters.gather();
+  stats.merge_seconds = seconds_since(t0);
+  stats.merges = counts.merges;
+  stats.switches = counts.switches;
+  stats.vanishings = counts.vanishings;
+  stats.anomalies = counts.anomalies;
+  stats.redone_merges = counts.redone_merges;
+  stats.max_queue = counts.max_queue;
+  if(statistics)
+    *statistics = stats;
+  return Medial_axis_access::make<Kernel>(std::shared_ptr<const Data>(data));
+}
+
+} // namespace internal
+} // namespace Progressive_medial_axes
+
 /*!
 \ingroup PkgProgressiveMedialAxis2Ref
 Computes the medial axis of a polygon in one shot: a `CGAL::Polygon_2` or
 `CGAL::Polygon_with_holes_2` of any kernel, or a range of rings.  Throws
 `Progressive_medial_axes::Input_error` if the polygon is not valid.
+
+The computation is the divide and conquer of the paper (section 6.4): the
+triangles of a constrained Delaunay triangulation are cut into connected
+parts whose axes are computed independently and merged along the diagonals
+between them.  When the package is linked with oneTBB
+(`CGAL_LINKED_WITH_TBB`, the CMake target `CGAL::TBB_support`), the parts
+are computed in parallel, on the threads of the current `tbb::task_arena`
+(all hardware threads by default; run the call inside a
+`tbb::task_arena(n).execute()` to use n), for traits over a kernel of
+doubles (`Epick`, `Simple_cartesian<double>`): the exact number types of
+`Epeck` and `CORE::Expr` share state between threads, and run sequentially.
+Without oneTBB it runs sequentially.  The result is the same in all cases.
+
+If `statistics` is given, it receives the input size, the times of the
+phases and the counts of the merges and their events.
 */
 template <class Polygon, class Traits>
 Medial_axis_2<typename Traits::Kernel> medial_axis_2(const Polygon& polygon, const Traits& traits,
-                                                    Medial_axis_input_check check = CHECK_INPUT)
+                                                    Medial_axis_input_check check = CHECK_INPUT,
+                                                    Progressive_medial_axis_statistics* statistics = nullptr)
 {
-  Progressive_medial_axis_2<Traits> pma(polygon, traits, check);
-  pma.refine_all();
-  return pma.release_medial_axis();
+  return Progressive_medial_axes::internal::one_shot_medial_axis(
+    Progressive_medial_axes::internal::rings_of<typename Traits::Kernel>(polygon), traits, check, statistics);
 }
 
 /*!

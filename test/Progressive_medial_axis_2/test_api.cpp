@@ -393,6 +393,15 @@ void threads()
   for(auto& th : pool) th.join();
   CHECK(sums[0] == sums[1] && sums[1] == sums[2] && sums[2] == sums[3], "concurrent readers agree");
   for(int t = 4; t < 8; ++t) CHECK(sums[t] > 0, "concurrent builders");
+  // the one-shot divide and conquer, whose parts run on the threads of TBB
+  // (when linked with it), gives the progressive result
+  const auto big = pma_test::random_polygon_with_holes(7, 60, 20);
+  CGAL::Progressive_medial_axis_2<> progressive(big);
+  progressive.refine_all();
+  const auto one_shot = CGAL::medial_axis_2(big);
+  CHECK(one_shot.number_of_edges() == progressive.medial_axis().number_of_edges() &&
+          one_shot.number_of_vertices() == progressive.medial_axis().number_of_vertices(),
+        "the parallel one-shot axis has the size of the progressive one");
 }
 
 } // namespace

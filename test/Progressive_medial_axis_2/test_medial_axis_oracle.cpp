@@ -99,7 +99,12 @@ public:
   // invariants.  `input_names`: name generators by the input (full shape).
   bool compare(const PMA& pma, bool input_names, const std::string& what, const Rings& input)
   {
-    const MA& ma = pma.medial_axis();
+    return compare(pma.medial_axis(), std::to_string(pma.current_step()), input_names, what, input);
+  }
+
+  // The same for an axis `ma`; `step` names it in messages.
+  bool compare(const MA& ma, const std::string& step, bool input_names, const std::string& what, const Rings& input)
+  {
     Names names(ma, input_names ? Names::INPUT : Names::SHAPE);
     Names shape_names(ma, Names::SHAPE);
     Rings shape;
@@ -120,18 +125,17 @@ public:
       ours.push_back(pma_test::Oracle_curve{c.a, c.b, c.length});
     pma_test::Curve_diff diff = pma_test::compare_curves(ours, oracle.curves, oracle.bbox_diagonal);
     const int before = pma_test::failures();
-    CHECK(diff.ok(), what << " step " << pma.current_step() << ": pairs differ from the oracle (ours | oracle)\n"
+    CHECK(diff.ok(), what << " step " << step << ": pairs differ from the oracle (ours | oracle)\n"
                           << diff.report() << "  shape: " << wkt(oracle_rings));
-    check_invariants(pma, what, shape_xy, oracle.bbox_diagonal, int(shape.size()) - 1);
+    check_invariants(ma, step, what, shape_xy, oracle.bbox_diagonal, int(shape.size()) - 1);
     ++comparisons;
     return pma_test::failures() == before;
   }
 
-  void check_invariants(const PMA& pma, const std::string& what,
+  void check_invariants(const MA& ma, const std::string& step, const std::string& what,
                         const std::vector<std::vector<std::pair<double, double> > >& shape,
                         double diagonal, int holes)
   {
-    const MA& ma = pma.medial_axis();
     // The medial axis is connected and has one independent cycle per hole.
     typedef typename MA::Vertex_handle Vertex;
     std::size_t nv = 0, ne = 0;
@@ -149,9 +153,9 @@ public:
     }
     for(const auto& v : ma.vertices())
       if(find(v) == v) ++components;
-    CHECK(components == 1, what << " step " << pma.current_step() << ": the axis has " << components << " components");
+    CHECK(components == 1, what << " step " << step << ": the axis has " << components << " components");
     CHECK(long(ne) - long(nv) + 1 == holes,
-          what << " step " << pma.current_step() << ": the axis has " << (long(ne) - long(nv) + 1)
+          what << " step " << step << ": the axis has " << (long(ne) - long(nv) + 1)
                << " independent cycles, the shape " << holes << " holes");
 
     // Branch points are equidistant from their generators.
@@ -165,7 +169,7 @@ public:
         auto a = MA::to_xy(g.source()), b = MA::to_xy(g.target());
         double d = g.is_point() ? std::hypot(p.first - a.first, p.second - a.second)
                                 : distance_to_segment(p.first, p.second, a.first, a.second, b.first, b.second);
-        CHECK(std::fabs(d - r) <= tol, what << " step " << pma.current_step() << ": branch point (" << p.first << ", "
+        CHECK(std::fabs(d - r) <= tol, what << " step " << step << ": branch point (" << p.first << ", "
                                              << p.second << ") r=" << r << " is at distance " << d << " of "
                                              << g.id());
       }
@@ -178,7 +182,7 @@ public:
         double x = pl[i].first, y = pl[i].second;
         double bd = boundary_distance(shape, x, y);
         bool ok = bd <= 1e-9 * diagonal || inside(shape, x, y);
-        CHECK(ok, what << " step " << pma.current_step() << ": curve " << e.first_generator().id() << "/"
+        CHECK(ok, what << " step " << step << ": curve " << e.first_generator().id() << "/"
                        << e.second_generator().id() << " leaves the shape at (" << x << ", " << y << ")");
         if(!ok) break;
       }
@@ -214,6 +218,17 @@ bool run_polygon(Checker<Traits>& checker, const Rings& rings, const std::string
     checker.compare(pma, true, what, rings);
   // exact decisions never force an event; the double model redoes such merges
   CHECK(pma.statistics().anomalies == 0, what << ": " << pma.statistics().anomalies << " forced events");
+  // the one-shot divide and conquer, cut into 1 to 9 parts
+  if(pma_test::failures() == before) {
+    static std::size_t count = 0;
+    const std::size_t parts = 1 + (count++ % 9);
+    CGAL::Progressive_medial_axis_statistics stats;
+    const auto ma = CGAL::Progressive_medial_axes::internal::one_shot_medial_axis(
+      CGAL::Progressive_medial_axes::internal::rings_of<typename Traits::Kernel>(rings), Traits(), CGAL::CHECK_INPUT,
+      &stats, parts);
+    checker.compare(ma, "one-shot in " + std::to_string(parts) + " parts", true, what, rings);
+    CHECK(stats.anomalies == 0, what << ": " << stats.anomalies << " forced events in the one-shot");
+  }
   return pma_test::failures() == before;
 }
 

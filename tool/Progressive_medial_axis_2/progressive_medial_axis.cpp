@@ -2,8 +2,9 @@
 //
 //   progressive_medial_axis [options] INPUT.wkt|INPUT.geojson
 //
-// Reads one polygon (WKT POLYGON or GeoJSON Polygon), computes its
-// region-growing progressive medial axis, and prints or writes it.  Run with
+// Reads one polygon (WKT POLYGON or GeoJSON Polygon), computes its medial
+// axis (in one shot, or progressively by region growing with --step or
+// --frames), and prints or writes it.  Run with
 // --help for the options.  Exit status: 0 on success, 2 on invalid input or
 // usage, 1 on any other failure.
 
@@ -15,12 +16,17 @@
 #include <pma_tool/medial_axis_io.h>
 #include <pma_tool/medial_axis_drawing.h>
 
+#ifdef CGAL_LINKED_WITH_TBB
+#include <tbb/task_arena.h>
+#endif
+
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
 #include <iostream>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 namespace {
@@ -28,7 +34,8 @@ namespace {
 const char* usage_text =
   "usage: progressive_medial_axis [options] INPUT.wkt|INPUT.geojson\n"
   "\n"
-  "Computes the region-growing progressive medial axis of one polygon.\n"
+  "Computes the medial axis of one polygon: in one shot (divide and conquer, in\n"
+  "parallel), or progressively by region growing with --step or --frames.\n"
   "Generator ids: e<r>.<i> is the edge from vertex i to vertex i+1 of ring r\n"
   "(ring 0 the outer ring, ring k the k-th hole), v<r>.<i> the reflex vertex i.\n"
   "\n"
@@ -45,6 +52,7 @@ const char* usage_text =
   "                     P_000.svg ... (the last one is the final axis)\n"
   "  --frames-prefix P  file name prefix of the progressive pictures\n"
   "  --traits T         filtered (default: exact decisions), epick (double), exact (CORE::Expr)\n"
+  "  --threads N        threads of the one-shot computation (default: all hardware threads)\n"
   "  --stats            print the input size, step count, times and the largest n_v\n"
   "  --help             print this text\n";
 
@@ -53,6 +61,7 @@ struct Options {
   long long step = -1;
   std::string input, shape_out, svg, geojson, wkt_out, frames_prefix, traits = "filtered";
   int frames = 0;
+  int threads = 0;   // 0: all hardware threads
 };
 
 [[noreturn]] void usage_error(const std::string& msg)
@@ -91,6 +100,13 @@ Options parse(int argc, char** argv)
       long n = std::strtol(v.c_str(), &end, 10);
       if(v.empty() || *end != '\0' || n < 1 || n > 10000) usage_error("--frames needs an integer from 1 to 10000, got '" + v + "'");
       o.frames = int(n);
+    }
+    else if(a == "--threads") {
+      std::string v = value("--threads");
+      char* end = nullptr;
+      long n = std::strtol(v.c_str(), &end, 10);
+      if(v.empty() || *end != '\0' || n < 1 || n > 4096) usage_error("--threads needs an integer from 1 to 4096, got '" + v + "'");
+      o.threads = int(n);
     }
     else if(a == "--traits") {
       o.traits = value("--traits");
@@ -131,6 +147,22 @@ auto print_filter_statistics(const Traits&, int) -> decltype(Traits::filter_stat
 template <class Traits>
 void print_filter_statistics(const Traits&, long) {}
 
+// A copy of the counters of the exact-decision traits, and its restoration.
+template <class Traits>
+auto filter_counters(int) -> decltype(Traits::filter_statistics())
+{
+  return Traits::filter_statistics();
+}
+template <class Traits>
+int filter_counters(long) { return 0; }
+template <class Traits, class C>
+auto restore_filter_counters(const C& c, int) -> decltype(Traits::filter_statistics() = c, void())
+{
+  Traits::filter_statistics() = c;
+}
+template <class Traits, class C>
+void restore_filter_counters(const C&, long) {}
+
 template <class Traits>
 int run(const Options& o)
 {
@@ -148,44 +180,68 @@ int run(const Options& o)
   }
   double read_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 
+  const bool progressive = o.step >= 0 || o.frames > 0;
   std::unique_ptr<PMA> pma;
-  try {
-    pma.reset(new PMA(rings));
-  } catch(const CGAL::Progressive_medial_axes::Input_error& e) {
-    std::cerr << o.input << ": " << e.what() << "\n";
-    return 2;
-  }
+  Medial_axis one_shot;
+  CGAL::Progressive_medial_axis_statistics one_shot_stats;
+  int threads = 1;
+  if(!progressive) {
+    // the one-shot divide and conquer, on o.threads threads
+    auto compute = [&]() { one_shot = CGAL::medial_axis_2(rings, Traits(), CGAL::CHECK_INPUT, &one_shot_stats); };
+    try {
+#ifdef CGAL_LINKED_WITH_TBB
+      threads = o.threads > 0 ? o.threads : tbb::info::default_concurrency();
+      // exact kernels run sequentially (see CGAL::medial_axis_2)
+      if(!std::is_floating_point<typename Traits::Kernel::FT>::value) threads = 1;
+      tbb::task_arena arena(threads);
+      arena.execute(compute);
+#else
+      compute();
+#endif
+    } catch(const CGAL::Progressive_medial_axes::Input_error& e) {
+      std::cerr << o.input << ": " << e.what() << "\n";
+      return 2;
+    }
+  } else {
+    try {
+      pma.reset(new PMA(rings));
+    } catch(const CGAL::Progressive_medial_axes::Input_error& e) {
+      std::cerr << o.input << ": " << e.what() << "\n";
+      return 2;
+    }
 
-  const std::size_t last = (o.step >= 0) ? std::min<std::size_t>(std::size_t(o.step), pma->number_of_steps())
-                                         : pma->number_of_steps();
-  // progressive pictures: frames at steps spread over the run, the last one final
-  std::vector<std::size_t> frame_steps;
-  if(o.frames > 0) {
-    for(int i = 0; i < o.frames; ++i) {
-      double f = (o.frames == 1) ? 1.0 : double(i) / double(o.frames - 1);
-      // spread on a square-root scale so that early, coarse steps are shown
-      frame_steps.push_back(std::size_t(std::llround(f * f * double(last))));
+    const std::size_t last = (o.step >= 0) ? std::min<std::size_t>(std::size_t(o.step), pma->number_of_steps())
+                                           : pma->number_of_steps();
+    // progressive pictures: frames at steps spread over the run, the last one final
+    std::vector<std::size_t> frame_steps;
+    if(o.frames > 0) {
+      for(int i = 0; i < o.frames; ++i) {
+        double f = (o.frames == 1) ? 1.0 : double(i) / double(o.frames - 1);
+        // spread on a square-root scale so that early, coarse steps are shown
+        frame_steps.push_back(std::size_t(std::llround(f * f * double(last))));
+      }
+    }
+    std::size_t next_frame = 0;
+    auto draw_frames = [&]() {
+      while(next_frame < frame_steps.size() && frame_steps[next_frame] <= pma->current_step()) {
+        char name[32];
+        std::snprintf(name, sizeof(name), "_%03zu.svg", next_frame);
+        std::ofstream f = open_out(o.frames_prefix + name);
+        pma_tool::write_svg(f, pma->medial_axis(),
+                              "step " + std::to_string(pma->current_step()) + " of " +
+                                std::to_string(pma->number_of_steps()), 1000, true);
+        ++next_frame;
+      }
+    };
+    draw_frames();
+    while(pma->current_step() < last) {
+      pma->refine();
+      if(!frame_steps.empty()) draw_frames();
     }
   }
-  std::size_t next_frame = 0;
-  auto draw_frames = [&]() {
-    while(next_frame < frame_steps.size() && frame_steps[next_frame] <= pma->current_step()) {
-      char name[32];
-      std::snprintf(name, sizeof(name), "_%03zu.svg", next_frame);
-      std::ofstream f = open_out(o.frames_prefix + name);
-      pma_tool::write_svg(f, pma->medial_axis(),
-                            "step " + std::to_string(pma->current_step()) + " of " +
-                              std::to_string(pma->number_of_steps()), 1000, true);
-      ++next_frame;
-    }
-  };
-  draw_frames();
-  while(pma->current_step() < last) {
-    pma->refine();
-    if(!frame_steps.empty()) draw_frames();
-  }
+  const double total_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 
-  const Medial_axis& ma = pma->medial_axis();
+  const Medial_axis& ma = progressive ? pma->medial_axis() : one_shot;
   const bool shape_mode = (o.step >= 0);
   Names names(ma, shape_mode ? Names::SHAPE : Names::INPUT);
 
@@ -221,12 +277,22 @@ int run(const Options& o)
     pma_tool::write_wkt_axis(f, ma);
   }
   if(o.stats) {
-    const CGAL::Progressive_medial_axis_statistics& s = pma->statistics();
+    const CGAL::Progressive_medial_axis_statistics& s = progressive ? pma->statistics() : one_shot_stats;
     std::size_t nb = 0;
     for(const auto& v : ma.vertices())
       if(v.kind() == Medial_axis::BRANCH_POINT) ++nb;
+    // the step count of region growing (in one-shot mode, counted now: all done)
+    std::size_t steps = 0;
+    if(progressive) {
+      steps = pma->number_of_steps();
+    } else {
+      const auto filters = filter_counters<Traits>(0);   // counting steps does not count as work
+      steps = PMA(rings, Traits(), CGAL::TRUST_INPUT).number_of_steps();
+      restore_filter_counters<Traits>(filters, 0);
+    }
     std::printf("input_vertices %zu\nholes %zu\ntriangles %zu\nsteps %zu\nsteps_done %zu\n",
-                s.input_vertices, s.holes, s.triangles, pma->number_of_steps(), pma->current_step());
+                s.input_vertices, s.holes, s.triangles, steps, progressive ? pma->current_step() : steps);
+    std::printf("mode %s\nthreads %d\ntime_total %.6f\n", progressive ? "region" : "oneshot", threads, total_seconds);
     std::printf("traits %s\n", o.traits.c_str());
     std::printf("time_read %.6f\ntime_validate %.6f\ntime_triangulate %.6f\ntime_merge %.6f\n",
                 read_seconds, s.validation_seconds, s.triangulation_seconds, s.merge_seconds);
@@ -234,8 +300,13 @@ int run(const Options& o)
                 s.switches, s.vanishings, s.anomalies, s.max_queue);
     std::printf("redone_merges %zu\n", s.redone_merges);
     std::printf("medial_curves %zu\nbranch_vertices %zu\n", ma.number_of_edges(), nb);
-    print_filter_statistics(pma->traits(), 0);
+    print_filter_statistics(Traits(), 0);
   }
+  // The process ends right after the output (main() calls std::_Exit):
+  // the axis is left to the system rather than freed record by record,
+  // which takes a fifth of the time of a one-shot run.
+  if(pma) (void)pma.release();
+  else (void)new Medial_axis(std::move(one_shot));
   return 0;
 }
 
@@ -244,14 +315,19 @@ int run(const Options& o)
 int main(int argc, char** argv)
 {
   Options o = parse(argc, argv);
+  int status = 1;
   try {
     if(o.traits == "epick")   // every decision in double
-      return run<CGAL::Progressive_medial_axis_traits_2<CGAL::Simple_cartesian<double> > >(o);
-    if(o.traits == "exact")
-      return run<CGAL::Progressive_medial_axis_traits_2<CGAL::Simple_cartesian<CORE::Expr> > >(o);
-    return run<CGAL::Progressive_medial_axis_traits_2<CGAL::Epick> >(o);
+      status = run<CGAL::Progressive_medial_axis_traits_2<CGAL::Simple_cartesian<double> > >(o);
+    else if(o.traits == "exact")
+      status = run<CGAL::Progressive_medial_axis_traits_2<CGAL::Simple_cartesian<CORE::Expr> > >(o);
+    else
+      status = run<CGAL::Progressive_medial_axis_traits_2<CGAL::Epick> >(o);
   } catch(const std::exception& e) {
     std::cerr << "progressive_medial_axis: " << e.what() << "\n";
-    return 1;
+    status = 1;
   }
+  std::cout.flush();
+  std::fflush(nullptr);
+  std::_Exit(status);
 }

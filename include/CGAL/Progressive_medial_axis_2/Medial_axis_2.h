@@ -30,7 +30,20 @@
 
 namespace CGAL {
 
+template <class K> class Medial_axis_2;
 template <class Traits_> class Progressive_medial_axis_2;
+namespace Progressive_medial_axes {
+namespace internal {
+// Builds a Medial_axis_2 from the data that a driver filled.
+struct Medial_axis_access {
+  template <class K, class Data>
+  static Medial_axis_2<K> make(std::shared_ptr<const Data> d)
+  {
+    return Medial_axis_2<K>(std::move(d));
+  }
+};
+} // namespace internal
+} // namespace Progressive_medial_axes
 
 /*!
 \ingroup PkgProgressiveMedialAxis2Ref
@@ -453,6 +466,7 @@ public:
 
 private:
   template <class> friend class Progressive_medial_axis_2;
+  friend struct Progressive_medial_axes::internal::Medial_axis_access;
 
   explicit Medial_axis_2(std::shared_ptr<const Data> d) : d_(std::move(d)) {}
 

@@ -299,6 +299,47 @@ public:
     return p;
   }
 
+  /// The shifts of the indices of a structure appended by append().
+  struct Offsets {
+    int halfedge = 0, vertex = 0, face = 0;
+  };
+
+  /// Moves the elements of `other` (built on its own, for example by
+  /// another thread) to the end of this structure; their indices grow by
+  /// the returned offsets.  The cost is linear in the size of `other`.
+  /// Neither structure may be journaling.
+  Offsets append(Halfedge_structure& other)
+  {
+    CGAL_precondition(!journal_ && !other.journal_);
+    const Offsets o{int(halfedges_.size()), int(vertices_.size()), int(faces_.size())};
+    auto shift = [](int& i, int by) { if(i >= 0) i += by; };
+    halfedges_.reserve(halfedges_.size() + other.halfedges_.size());
+    for(Halfedge h : other.halfedges_) {
+      shift(h.next, o.halfedge);
+      shift(h.prev, o.halfedge);
+      shift(h.vertex, o.vertex);
+      shift(h.face, o.face);   // OUTSIDE and DELETED stay
+      halfedges_.push_back(h);
+    }
+    zero_length_.insert(zero_length_.end(), other.zero_length_.begin(), other.zero_length_.end());
+    vertices_.reserve(vertices_.size() + other.vertices_.size());
+    for(Vertex& v : other.vertices_) {
+      shift(v.halfedge, o.halfedge);
+      vertices_.push_back(std::move(v));
+    }
+    faces_.reserve(faces_.size() + other.faces_.size());
+    for(Face f : other.faces_) {
+      shift(f.halfedge, o.halfedge);
+      faces_.push_back(f);
+    }
+    for(int e : other.free_edges_) free_edges_.push_back(e + o.halfedge);
+    for(int v : other.free_vertices_) free_vertices_.push_back(v + o.vertex);
+    for(int f : other.free_faces_) free_faces_.push_back(f + o.face);
+    for(int v : other.pending_) pending_.push_back(v + o.vertex);
+    other = Halfedge_structure();
+    return o;
+  }
+
   void reserve(std::size_t faces, std::size_t vertices)
   {
     faces_.reserve(faces);

@@ -88,20 +88,31 @@ public:
   typedef typename Data::Hds Hds;
 
   Medial_axis_engine(Data& data, const Traits& traits)
-    : data_(data), traits_(traits), merge_(data.hds, data.points, traits)
+    : Medial_axis_engine(data.hds, data.points, traits)
+  {
+    data_ = &data;
+  }
+
+  /// An engine that works on a structure of its own over shared input
+  /// points (a part of a divide and conquer, built by another thread).
+  Medial_axis_engine(Hds& hds, const std::vector<Point_2>& points, const Traits& traits)
+    : hds_(hds), points_(points), traits_(traits), merge_(hds, points, traits)
   {
     if constexpr(Has_fallback) {
-      exact_merge_.reset(new Medial_merge<Fallback>(data.hds, data.points, exact_traits_));
+      exact_merge_.reset(new Medial_merge<Fallback>(hds, points, exact_traits_));
       merge_.set_strict(true);
     }
   }
 
-  Data& data() { return data_; }
-  const Data& data() const { return data_; }
+  /// The data, for an engine built on it.
+  Data& data() { return *data_; }
+  const Data& data() const { return *data_; }
+  Hds& hds() { return hds_; }
+  const std::vector<Point_2>& points() const { return points_; }
   const Traits& traits() const { return traits_; }
 
-  int source(int h) const { return data_.hds.source(h); }
-  int target(int h) const { return data_.hds.target(h); }
+  int source(int h) const { return hds_.source(h); }
+  int target(int h) const { return hds_.target(h); }
 
   /// Adds the medial axis of the triangle of input points `v[0], v[1],
   /// v[2]` (counter-clockwise) as a new component: three bisectors meeting
@@ -112,10 +123,10 @@ public:
   /// `v[i+2]`, with the triangle on its left.
   std::array<int, 3> add_triangle(const int v[3], const int corner[3])
   {
-    Hds& hds = data_.hds;
+    Hds& hds = hds_;
     int V[3];
     for(int i = 0; i < 3; ++i)
-      V[i] = corner[i] != NO_INDEX ? corner[i] : hds.new_vertex(data_.points[v[i]], FT(0), v[i]);
+      V[i] = corner[i] != NO_INDEX ? corner[i] : hds.new_vertex(points_[v[i]], FT(0), v[i]);
     const int Fa = hds.new_face(false, v[0], v[1]);   // side 2
     const int Fb = hds.new_face(false, v[1], v[2]);   // side 0
     const int Fc = hds.new_face(false, v[2], v[0]);   // side 1
@@ -156,7 +167,7 @@ public:
       // Inexact decisions: a merge that meets an anomaly is undone and
       // redone with exact decisions (as VRONI recovers at a higher level
       // of precision).
-      Hds& hds = data_.hds;
+      Hds& hds = hds_;
       hds.begin_journal();
       Recording_merge_visitor recording;
       try {
@@ -184,7 +195,7 @@ public:
   /// last call that is still alive and pending.
   void resolve_pending()
   {
-    Hds& hds = data_.hds;
+    Hds& hds = hds_;
     for(int v : hds.take_pending())
       if(hds.vertex(v).alive && hds.vertex(v).pending) resolve(v);
   }
@@ -196,7 +207,7 @@ public:
   // that a wrong decision on nearly degenerate input created.
   void check_new_vertices()
   {
-    Hds& hds = data_.hds;
+    Hds& hds = hds_;
     std::vector<int> vertices = hds.pending_in_journal();
     merge_.for_each_switch_vertex([&](int w) { vertices.push_back(w); });
     for(int v : vertices) {
@@ -206,7 +217,7 @@ public:
       FT r = x.radius;
       if(x.pending) {
         auto site_of = [&](const int* p) {
-          return p[0] == p[1] ? Site_2::point(data_.points[p[0]]) : Site_2::segment(data_.points[p[0]], data_.points[p[1]]);
+          return p[0] == p[1] ? Site_2::point(points_[p[0]]) : Site_2::segment(points_[p[0]], points_[p[1]]);
         };
         if(!traits_.construct_medial_disk_2_object()(site_of(x.triple[0]), site_of(x.triple[1]), site_of(x.triple[2]), c, r))
           throw Uncertain_decision();
@@ -219,8 +230,8 @@ public:
         const int f = hds.face_of(h);
         if(f >= 0) {
           const auto& F = static_cast<const Hds&>(hds).face(f);
-          const double ax = CGAL::to_double(data_.points[F.p0].x()), ay = CGAL::to_double(data_.points[F.p0].y());
-          const double bx = CGAL::to_double(data_.points[F.p1].x()), by = CGAL::to_double(data_.points[F.p1].y());
+          const double ax = CGAL::to_double(points_[F.p0].x()), ay = CGAL::to_double(points_[F.p0].y());
+          const double bx = CGAL::to_double(points_[F.p1].x()), by = CGAL::to_double(points_[F.p1].y());
           scale = (std::max)(scale, (std::max)((std::max)(std::fabs(ax), std::fabs(ay)), (std::max)(std::fabs(bx), std::fabs(by))));
           const double d = distance_to_segment(cx, cy, ax, ay, bx, by);
           if(!(std::fabs(d - rr) <= 1e-9 * scale)) throw Uncertain_decision();
@@ -241,10 +252,10 @@ public:
 
   void resolve(int v)
   {
-    resolve_vertex(data_.hds, v, traits_, [this](int f) { return merge_.site(f); },
+    resolve_vertex(hds_, v, traits_, [this](int f) { return merge_.site(f); },
                    [this](int p0, int p1) {
-                     return p0 == p1 ? Site_2::point(data_.points[p0])
-                                     : Site_2::segment(data_.points[p0], data_.points[p1]);
+                     return p0 == p1 ? Site_2::point(points_[p0])
+                                     : Site_2::segment(points_[p0], points_[p1]);
                    });
   }
 
@@ -253,7 +264,9 @@ private:
   static constexpr bool Has_fallback = !std::is_void<Fallback>::value;
   typedef typename std::conditional<Has_fallback, Fallback, Traits>::type Fallback_traits;
 
-  Data& data_;
+  Hds& hds_;
+  const std::vector<Point_2>& points_;
+  Data* data_ = nullptr;
   const Traits& traits_;
   Medial_merge<Traits> merge_;
   Fallback_traits exact_traits_;

@@ -1,0 +1,291 @@
+// Copyright (c) 2026 The Progressive_medial_axis_2 authors.
+// All rights reserved.
+//
+// This file is part of CGAL (www.cgal.org).
+//
+// $URL$
+// $Id$
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+//
+// Author(s)     : The Progressive_medial_axis_2 authors
+//
+// The one-shot driver: divide and conquer over the triangles of a
+// constrained Delaunay triangulation (Liu et al. 2016, section 6.4; every
+// merge is the engine's topology-oriented merge along one diagonal).
+//
+// The cut.  The dual graph of the triangulation (a node per triangle, an
+// arc per diagonal) is a tree for a simple polygon and has one independent
+// cycle per hole.  The cycles are broken by a breadth-first spanning tree;
+// the diagonals off the tree (exactly one per hole) are the "hole-closing"
+// diagonals.  The tree is cut into `parts` connected subtrees of about
+// equal size (a greedy bottom-up cut: a subtree is cut off as soon as it
+// holds the target number of triangles).  Every part is a union of
+// triangles joined along diagonals, so the axis of a part is computed by
+// merges along single diagonals, whose two ends are polygon vertices: no
+// merge ever meets a point that is not a vertex of the input.
+//
+// The merges, in three phases:
+//   1. every part, independently (in parallel with oneTBB when the package
+//      is linked with it, CGAL_LINKED_WITH_TBB; tbb::parallel_for over the
+//      parts): its triangles in
+//      breadth-first order from the part's root, each merged along the tree
+//      diagonal to its parent, in a half-edge structure that the part owns;
+//      the part's vertices are then resolved (their disks constructed);
+//   2. the parts' structures are appended to the result's structure (one
+//      copy of each part's records, linear in its size; no structure is
+//      shared between threads, so no merge takes a lock), and the parts are
+//      merged along the cut diagonals, each joining two components;
+//   3. the hole-closing diagonals are merged last: both sides of each are
+//      then the same shape, and the merge closes a ring around a hole.
+// Between merges a shape may touch itself at a polygon vertex (the fan of
+// triangles around the vertex is interrupted by a diagonal not merged
+// yet); every corner of such a vertex is a vertex of the structure of its
+// own, and the merge along a diagonal that ends there makes the corners of
+// its two sides one (Medial_merge::unify_corners).  After the last merge
+// every fan is whole, so every polygon vertex has one corner.
+//
+// The result is the medial axis of the polygon, the same structure (up to
+// numbering) as region growing gives after its last step.
+
+#ifndef CGAL_PROGRESSIVE_MEDIAL_AXIS_2_INTERNAL_DIVIDE_AND_CONQUER_H
+#define CGAL_PROGRESSIVE_MEDIAL_AXIS_2_INTERNAL_DIVIDE_AND_CONQUER_H
+
+#include <CGAL/Progressive_medial_axis_2/internal/Medial_axis_engine.h>
+#include <CGAL/Progressive_medial_axis_2/internal/Triangulate.h>
+#include <CGAL/Progressive_medial_axis_2/Merge_statistics.h>
+
+// CGAL_PMA2_NO_TBB turns the parallelism off where TBB is linked (for
+// ThreadSanitizer, which cannot see the synchronisation inside an
+// uninstrumented libtbb).
+#if defined(CGAL_LINKED_WITH_TBB) && !defined(CGAL_PMA2_NO_TBB)
+#define CGAL_PMA2_USE_TBB 1
+#include <tbb/parallel_for.h>
+#endif
+
+#include <algorithm>
+#include <array>
+#include <cstddef>
+#include <vector>
+
+namespace CGAL {
+namespace Progressive_medial_axes {
+namespace internal {
+
+/// Counts of the merges of a divide and conquer (or of a part of it).
+struct Divide_and_conquer_counts {
+  std::size_t merges = 0, switches = 0, vanishings = 0, anomalies = 0, redone_merges = 0, max_queue = 0;
+  void add(const Divide_and_conquer_counts& o)
+  {
+    merges += o.merges;
+    switches += o.switches;
+    vanishings += o.vanishings;
+    anomalies += o.anomalies;
+    redone_merges += o.redone_merges;
+    max_queue = (std::max)(max_queue, o.max_queue);
+  }
+  void add(const Merge_statistics& m)
+  {
+    ++merges;
+    anomalies += m.anomalies;
+    redone_merges += m.redone_exactly ? 1 : 0;
+    max_queue = (std::max)(max_queue, m.max_queue);
+  }
+  void on_switch() { ++switches; }
+  void on_vanish() { ++vanishings; }
+};
+
+template <class Traits>
+class Divide_and_conquer
+{
+public:
+  typedef Medial_axis_engine<Traits> Engine;
+  typedef typename Engine::Hds Hds;
+  typedef typename Traits::Point_2 Point_2;
+
+  /// `triangles` is the triangulation of the engine's polygon.
+  Divide_and_conquer(Engine& engine, std::vector<Triangle> triangles)
+    : engine_(engine), triangles_(std::move(triangles))
+  {}
+
+  /// Computes the axis into the engine's structure, cutting the spanning
+  /// tree into about `parts` parts, built in parallel if `parallel`.  The task of each part is run as
+  /// `run_part(task)`, in the thread that builds it (the caller can gather
+  /// thread-local counters there).
+  template <class Run_part>
+  Divide_and_conquer_counts run(std::size_t parts, bool parallel, const Run_part& run_part)
+  {
+    const int T = int(triangles_.size());
+    Divide_and_conquer_counts counts;
+    if(T == 0)
+      return counts;
+    spanning_tree();
+    cut(parts == 0 ? 1 : parts);
+    const std::size_t P = roots_.size();
+    sides_.assign(std::size_t(T), std::array<int, 3>{{NO_INDEX, NO_INDEX, NO_INDEX}});
+
+    // 1. the parts, each in a structure of its own (part 0 in the result's)
+    std::vector<Hds> structures(P);
+    std::vector<Divide_and_conquer_counts> part_counts(P);
+    auto build = [&](std::size_t p) {
+      run_part([&] {
+        Hds& hds = p == 0 ? engine_.hds() : structures[p];
+        if(p > 0) hds.reserve(2 * size_[p] + 16, 4 * size_[p] + 16);
+        Engine engine(hds, engine_.points(), engine_.traits());
+        build_part(engine, int(p), part_counts[p]);
+        engine.resolve_pending();
+      });
+    };
+#ifdef CGAL_PMA2_USE_TBB
+    if(parallel)
+      tbb::parallel_for(std::size_t(0), P, [&](std::size_t p) { build(p); }, tbb::simple_partitioner());
+    else
+#endif
+      for(std::size_t p = 0; p < P; ++p) build(p);
+    (void)parallel;
+    for(const auto& c : part_counts) counts.add(c);
+
+    // 2. one structure; the merges along the cut diagonals
+    Hds& hds = engine_.hds();
+    std::vector<typename Hds::Offsets> offsets(P);
+    for(std::size_t p = 1; p < P; ++p) offsets[p] = hds.append(structures[p]);
+    for(int t = 0; t < T; ++t)
+      for(int& h : sides_[std::size_t(t)])
+        if(h != NO_INDEX) h += offsets[std::size_t(part_[std::size_t(t)])].halfedge;
+    for(std::size_t p = 1; p < P; ++p) {
+      const int r = roots_[p];
+      merge_along(parent_[std::size_t(r)], r, counts);
+    }
+    // 3. the hole-closing diagonals
+    for(const auto& d : off_tree_)
+      merge_along(d[0], d[1], counts);
+    engine_.resolve_pending();
+    return counts;
+  }
+
+  std::size_t number_of_parts() const { return roots_.size(); }
+
+private:
+  // Breadth-first spanning tree of the dual graph from triangle 0: the
+  // parent of each triangle, the order, and the diagonals off the tree.
+  void spanning_tree()
+  {
+    const int T = int(triangles_.size());
+    parent_.assign(std::size_t(T), NO_INDEX);
+    order_.clear();
+    order_.reserve(std::size_t(T));
+    std::vector<char> seen(std::size_t(T), 0);
+    seen[0] = 1;
+    order_.push_back(0);
+    for(std::size_t i = 0; i < order_.size(); ++i) {
+      const int t = order_[i];
+      for(int e = 0; e < 3; ++e) {
+        const int u = triangles_[std::size_t(t)].nbr[e];
+        if(u < 0) continue;
+        if(!seen[std::size_t(u)]) {
+          seen[std::size_t(u)] = 1;
+          parent_[std::size_t(u)] = t;
+          order_.push_back(u);
+        } else if(u != parent_[std::size_t(t)] && parent_[std::size_t(u)] != t && t < u) {
+          off_tree_.push_back({{t, u}});
+        }
+      }
+    }
+    CGAL_assertion(order_.size() == std::size_t(T));
+  }
+
+  // Cuts the tree bottom-up into subtrees of at least T / parts triangles
+  // (the root's part takes the rest).  roots_[0] is the root of the tree.
+  void cut(std::size_t parts)
+  {
+    const int T = int(triangles_.size());
+    const int target = (std::max)(1, int((std::size_t(T) + parts - 1) / parts));
+    std::vector<int> size(std::size_t(T), 1);
+    std::vector<char> is_root(std::size_t(T), 0);
+    is_root[0] = 1;
+    for(std::size_t i = order_.size(); i-- > 1;) {
+      const int t = order_[i];
+      if(size[std::size_t(t)] >= target)
+        is_root[std::size_t(t)] = 1;
+      else
+        size[std::size_t(parent_[std::size_t(t)])] += size[std::size_t(t)];
+    }
+    roots_.clear();
+    size_.clear();
+    part_.assign(std::size_t(T), 0);
+    for(int t : order_) {
+      if(is_root[std::size_t(t)]) {
+        part_[std::size_t(t)] = int(roots_.size());
+        roots_.push_back(t);
+        size_.push_back(0);
+      } else {
+        part_[std::size_t(t)] = part_[std::size_t(parent_[std::size_t(t)])];
+      }
+      ++size_[std::size_t(part_[std::size_t(t)])];
+    }
+  }
+
+  int side_towards(int u, int t) const
+  {
+    int e = 0;
+    while(triangles_[std::size_t(u)].nbr[e] != t) ++e;
+    return e;
+  }
+
+  // Adds triangle t, merged along its tree diagonal to its parent (already
+  // in the structure of `engine`), or as the first triangle of its part.
+  void add(Engine& engine, int t, bool first, Divide_and_conquer_counts& counts)
+  {
+    const Triangle& T = triangles_[std::size_t(t)];
+    int corner[3] = {NO_INDEX, NO_INDEX, NO_INDEX};
+    if(first) {
+      sides_[std::size_t(t)] = engine.add_triangle(T.v, corner);
+      return;
+    }
+    const int u = parent_[std::size_t(t)];
+    const int e = side_towards(t, u);
+    const int h = sides_[std::size_t(u)][std::size_t(side_towards(u, t))];   // runs from v[e+2] to v[e+1]
+    corner[(e + 1) % 3] = engine.target(h);
+    corner[(e + 2) % 3] = engine.source(h);
+    sides_[std::size_t(t)] = engine.add_triangle(T.v, corner);
+    counts.add(engine.merge(h, sides_[std::size_t(t)][std::size_t(e)], counts));
+  }
+
+  void build_part(Engine& engine, int p, Divide_and_conquer_counts& counts)
+  {
+    // the part's triangles in the global breadth-first order: a parent
+    // comes before its children
+    const int root = roots_[std::size_t(p)];
+    std::vector<int> queue{root};
+    add(engine, root, true, counts);
+    for(std::size_t i = 0; i < queue.size(); ++i) {
+      const int t = queue[i];
+      for(int e = 0; e < 3; ++e) {
+        const int u = triangles_[std::size_t(t)].nbr[e];
+        if(u < 0 || parent_[std::size_t(u)] != t || part_[std::size_t(u)] != p) continue;
+        add(engine, u, false, counts);
+        queue.push_back(u);
+      }
+    }
+  }
+
+  // Merges the sides of triangles t and u along their common diagonal.
+  void merge_along(int t, int u, Divide_and_conquer_counts& counts)
+  {
+    const int ht = sides_[std::size_t(t)][std::size_t(side_towards(t, u))];
+    const int hu = sides_[std::size_t(u)][std::size_t(side_towards(u, t))];
+    counts.add(engine_.merge(ht, hu, counts));
+  }
+
+  Engine& engine_;
+  std::vector<Triangle> triangles_;
+  std::vector<int> parent_, order_, roots_, part_;
+  std::vector<std::size_t> size_;   // triangles of each part
+  std::vector<std::array<int, 2> > off_tree_;
+  std::vector<std::array<int, 3> > sides_;
+};
+
+} // namespace internal
+} // namespace Progressive_medial_axes
+} // namespace CGAL
+
+#endif // CGAL_PROGRESSIVE_MEDIAL_AXIS_2_INTERNAL_DIVIDE_AND_CONQUER_H
