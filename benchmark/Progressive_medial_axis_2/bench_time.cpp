@@ -7,7 +7,10 @@
 // Methods (default: all, in this order):
 //   pma_filtered      our full progressive sequence, filtered traits (exact decisions),
 //                     then the coordinates of every vertex of the final axis
-//   pma_epick         the same with the double-precision traits
+//   pma_oneshot_1     the one-shot divide and conquer (CGAL::medial_axis_2), filtered
+//                     traits, in a TBB arena of 1 thread, vertices read as above
+//   pma_oneshot_2     the same on 2 threads
+//   pma_epick         the full progressive sequence with the double-precision traits
 //   pma_exact         the same with the CORE::Expr traits (Simple_cartesian<CORE::Expr>)
 //   sdg               Segment_Delaunay_graph_2, filtered traits without intersections
 //                     over Simple_cartesian<double> (construction of the diagram)
@@ -25,8 +28,8 @@
 //                     at which they are all integral (construction of the diagram);
 //                     "not applicable" when there is no such k
 //
-// Our one-shot medial axis (medial_axis_2) is the full progressive sequence (region growing
-// to the whole shape; there is no separate one-shot algorithm), so the pma_* rows are both.
+// The one-shot rows (medial_axis_2: divide and conquer) and the progressive rows
+// (region growing to the whole shape) give the same axis.
 //
 // Every measurement runs in a child process (fork), so that its peak memory
 // (maxrss) is its own and a time limit can stop it (--timeout, default 600 s;
@@ -49,6 +52,9 @@
 // refinement step (step 1 is the first merge).
 
 #include <CGAL/Progressive_medial_axis_2.h>
+#ifdef CGAL_LINKED_WITH_TBB
+#include <tbb/task_arena.h>
+#endif
 
 #include "bench_common.h"
 
@@ -109,6 +115,30 @@ double run_pma(const Rings& rings, std::string& note, const std::string& nv_dump
     for(std::size_t i = 0; i < recorder.queue_per_step.size(); ++i) out << (i + 1) << ' ' << recorder.queue_per_step[i] << '\n';
     if(!out) throw std::runtime_error("cannot write " + nv_dump_file);
   }
+  return t;
+}
+
+// The one-shot divide and conquer (CGAL::medial_axis_2) on `threads` threads.
+double run_oneshot(const Rings& rings, std::string& note, int threads)
+{
+  typedef CGAL::Progressive_medial_axis_traits_2<CGAL::Epick> Traits;
+  double t0 = now();
+  CGAL::Medial_axis_2<CGAL::Epick> ma;
+  auto compute = [&]() { ma = CGAL::medial_axis_2(rings, Traits()); };
+#ifdef CGAL_LINKED_WITH_TBB
+  tbb::task_arena arena(threads);
+  arena.execute(compute);
+#else
+  (void)threads;
+  compute();
+#endif
+  double checksum = 0;
+  for(const auto& v : ma.vertices()) checksum += CGAL::to_double(v.radius());
+  double t = now() - t0;
+  std::ostringstream o;
+  if(!(checksum >= 0)) o << "bad radius;";
+  o << "edges=" << ma.number_of_edges() << ";threads=" << threads;
+  note = o.str();
   return t;
 }
 
@@ -178,6 +208,8 @@ double run_method(const std::string& m, const Rings& rings, std::string& note, d
   if(m == "pma_epick") return run_pma<CGAL::Progressive_medial_axis_traits_2<CGAL::Simple_cartesian<double> > >(rings, note, "");
   if(m == "pma_exact")
     return run_pma<CGAL::Progressive_medial_axis_traits_2<CGAL::Simple_cartesian<CORE::Expr> > >(rings, note, "");
+  if(m == "pma_oneshot_1") return run_oneshot(rings, note, 1);
+  if(m == "pma_oneshot_2") return run_oneshot(rings, note, 2);
   if(m == "sdg") return run_sdg<Sdg>(rings, note);
   if(m == "sdg_hierarchy") return run_sdg<Sdg_hierarchy>(rings, note);
   if(m == "sdg_extract") return run_sdg_extract(rings, note, aux);
@@ -186,7 +218,7 @@ double run_method(const std::string& m, const Rings& rings, std::string& note, d
   throw std::runtime_error("unknown method " + m);
 }
 
-const std::vector<std::string> all_methods = {"pma_filtered", "pma_epick", "pma_exact", "sdg",
+const std::vector<std::string> all_methods = {"pma_filtered", "pma_oneshot_1", "pma_oneshot_2", "pma_epick", "pma_exact", "sdg",
                                               "sdg_hierarchy", "sdg_extract", "sdg_exact", "boost_voronoi"};
 
 struct Measure {

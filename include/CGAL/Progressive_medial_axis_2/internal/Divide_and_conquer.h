@@ -27,16 +27,18 @@
 // The merges, in three phases:
 //   1. every part, independently (in parallel with oneTBB when the package
 //      is linked with it, CGAL_LINKED_WITH_TBB; tbb::parallel_for over the
-//      parts): its triangles in
-//      breadth-first order from the part's root, each merged along the tree
-//      diagonal to its parent, in a half-edge structure that the part owns;
-//      the part's vertices are then resolved (their disks constructed);
+//      parts): its triangles in breadth-first order from the part's root,
+//      each merged along the tree diagonal to its parent, and along every
+//      hole-closing diagonal of the part as soon as both its triangles are
+//      in, in a half-edge structure that the part owns; the part's vertices
+//      are then resolved (their disks constructed);
 //   2. the parts' structures are appended to the result's structure (one
 //      copy of each part's records, linear in its size; no structure is
 //      shared between threads, so no merge takes a lock), and the parts are
 //      merged along the cut diagonals, each joining two components;
-//   3. the hole-closing diagonals are merged last: both sides of each are
-//      then the same shape, and the merge closes a ring around a hole.
+//   3. the hole-closing diagonals between two parts are merged last: both
+//      sides of each are then the same shape, and the merge closes a ring
+//      around a hole.
 // Between merges a shape may touch itself at a polygon vertex (the fan of
 // triangles around the vertex is interrupted by a diagonal not merged
 // yet); every corner of such a vertex is a vertex of the structure of its
@@ -122,6 +124,7 @@ public:
     cut(parts == 0 ? 1 : parts);
     const std::size_t P = roots_.size();
     sides_.assign(std::size_t(T), std::array<int, 3>{{NO_INDEX, NO_INDEX, NO_INDEX}});
+    added_.assign(std::size_t(T), 0);
 
     // 1. the parts, each in a structure of its own (part 0 in the result's)
     std::vector<Hds> structures(P);
@@ -153,11 +156,13 @@ public:
         if(h != NO_INDEX) h += offsets[std::size_t(part_[std::size_t(t)])].halfedge;
     for(std::size_t p = 1; p < P; ++p) {
       const int r = roots_[p];
-      merge_along(parent_[std::size_t(r)], r, counts);
+      merge_along(engine_, parent_[std::size_t(r)], r, counts);
     }
-    // 3. the hole-closing diagonals
+    // 3. the hole-closing diagonals between parts (those inside a part were
+    // merged by the part)
     for(const auto& d : off_tree_)
-      merge_along(d[0], d[1], counts);
+      if(part_[std::size_t(d[0])] != part_[std::size_t(d[1])])
+        merge_along(engine_, d[0], d[1], counts);
     engine_.resolve_pending();
     return counts;
   }
@@ -257,23 +262,31 @@ private:
     const int root = roots_[std::size_t(p)];
     std::vector<int> queue{root};
     add(engine, root, true, counts);
+    added_[std::size_t(root)] = 1;
     for(std::size_t i = 0; i < queue.size(); ++i) {
       const int t = queue[i];
       for(int e = 0; e < 3; ++e) {
         const int u = triangles_[std::size_t(t)].nbr[e];
         if(u < 0 || parent_[std::size_t(u)] != t || part_[std::size_t(u)] != p) continue;
         add(engine, u, false, counts);
+        added_[std::size_t(u)] = 1;
         queue.push_back(u);
+        // a hole-closing diagonal of the part, as soon as both its sides are in
+        for(int f = 0; f < 3; ++f) {
+          const int w = triangles_[std::size_t(u)].nbr[f];
+          if(w >= 0 && w != t && part_[std::size_t(w)] == p && added_[std::size_t(w)] && parent_[std::size_t(w)] != u)
+            merge_along(engine, u, w, counts);
+        }
       }
     }
   }
 
   // Merges the sides of triangles t and u along their common diagonal.
-  void merge_along(int t, int u, Divide_and_conquer_counts& counts)
+  void merge_along(Engine& engine, int t, int u, Divide_and_conquer_counts& counts)
   {
     const int ht = sides_[std::size_t(t)][std::size_t(side_towards(t, u))];
     const int hu = sides_[std::size_t(u)][std::size_t(side_towards(u, t))];
-    counts.add(engine_.merge(ht, hu, counts));
+    counts.add(engine.merge(ht, hu, counts));
   }
 
   Engine& engine_;
@@ -282,6 +295,7 @@ private:
   std::vector<std::size_t> size_;   // triangles of each part
   std::vector<std::array<int, 2> > off_tree_;
   std::vector<std::array<int, 3> > sides_;
+  std::vector<char> added_;   // written by the part of each triangle only
 };
 
 } // namespace internal
