@@ -305,17 +305,9 @@ struct Thread_counters<Traits, std::void_t<decltype(Traits::filter_statistics())
       return;
     const Counters after = Traits::filter_statistics();
     std::lock_guard<std::mutex> lock(m);
-    add(others, after, before);
+    others.add_difference(after, before);
   }
-  void gather() { add(Traits::filter_statistics(), others, Counters()); }
-  static void add(Counters& to, const Counters& a, const Counters& b)
-  {
-    static_assert(sizeof(Counters) % sizeof(std::size_t) == 0, "counters are size_t");
-    std::size_t* t = reinterpret_cast<std::size_t*>(&to);
-    const std::size_t* x = reinterpret_cast<const std::size_t*>(&a);
-    const std::size_t* y = reinterpret_cast<const std::size_t*>(&b);
-    for(std::size_t i = 0; i < sizeof(Counters) / sizeof(std::size_t); ++i) t[i] += x[i] - y[i];
-  }
+  void gather() { Traits::filter_statistics().add_difference(others, Counters()); }
 };
 
 template <class Traits>

@@ -662,6 +662,20 @@ public:
     std::size_t rational_comparisons = 0;      ///< ... decided in exact one-root numbers
     std::size_t exact_comparisons = 0;         ///< ... decided in nested-root numbers
     std::size_t exact_ties = 0;                ///< comparisons that found two times equal (one-root or nested)
+
+    /// Adds the counts of `b - a` (what another thread counted between two readings).
+    void add_difference(const Filter_statistics& b, const Filter_statistics& a)
+    {
+      interval_evaluations += b.interval_evaluations - a.interval_evaluations;
+      double_double_evaluations += b.double_double_evaluations - a.double_double_evaluations;
+      mpfr_evaluations += b.mpfr_evaluations - a.mpfr_evaluations;
+      rational_evaluations += b.rational_evaluations - a.rational_evaluations;
+      exact_evaluations += b.exact_evaluations - a.exact_evaluations;
+      mpfr_comparisons += b.mpfr_comparisons - a.mpfr_comparisons;
+      rational_comparisons += b.rational_comparisons - a.rational_comparisons;
+      exact_comparisons += b.exact_comparisons - a.exact_comparisons;
+      exact_ties += b.exact_ties - a.exact_ties;
+    }
   };
   static Filter_statistics& filter_statistics()
   {

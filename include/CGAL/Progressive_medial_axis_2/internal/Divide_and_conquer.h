@@ -229,29 +229,22 @@ private:
     }
   }
 
-  int side_towards(int u, int t) const
-  {
-    int e = 0;
-    while(triangles_[std::size_t(u)].nbr[e] != t) ++e;
-    return e;
-  }
+  int side_towards(int u, int t) const { return internal::side_towards(triangles_, u, t); }
 
   // Adds triangle t, merged along its tree diagonal to its parent (already
   // in the structure of `engine`), or as the first triangle of its part.
   void add(Engine& engine, int t, bool first, Divide_and_conquer_counts& counts)
   {
     const Triangle& T = triangles_[std::size_t(t)];
-    int corner[3] = {NO_INDEX, NO_INDEX, NO_INDEX};
     if(first) {
-      sides_[std::size_t(t)] = engine.add_triangle(T.v, corner);
+      const int none[3] = {NO_INDEX, NO_INDEX, NO_INDEX};
+      sides_[std::size_t(t)] = engine.add_triangle(T.v, none);
       return;
     }
     const int u = parent_[std::size_t(t)];
     const int e = side_towards(t, u);
-    const int h = sides_[std::size_t(u)][std::size_t(side_towards(u, t))];   // runs from v[e+2] to v[e+1]
-    corner[(e + 1) % 3] = engine.target(h);
-    corner[(e + 2) % 3] = engine.source(h);
-    sides_[std::size_t(t)] = engine.add_triangle(T.v, corner);
+    const int h = sides_[std::size_t(u)][std::size_t(side_towards(u, t))];
+    sides_[std::size_t(t)] = engine.add_triangle_across(T.v, e, h);
     counts.add(engine.merge(h, sides_[std::size_t(t)][std::size_t(e)], counts));
   }
 

@@ -157,6 +157,19 @@ public:
     return {{bb, bc, ba}};
   }
 
+  /// Adds the triangle `v` next to the grown shape: its side `e` (from
+  /// `v[e+1]` to `v[e+2]`) lies on the shape's boundary half-edge `h`
+  /// (from `v[e+2]` to `v[e+1]`), whose end vertices become the triangle's
+  /// corners there.  The sides are returned as by add_triangle(); the merge
+  /// along `h` is left to the caller.
+  std::array<int, 3> add_triangle_across(const int v[3], int e, int h)
+  {
+    int corner[3] = {NO_INDEX, NO_INDEX, NO_INDEX};
+    corner[(e + 1) % 3] = target(h);
+    corner[(e + 2) % 3] = source(h);
+    return add_triangle(v, corner);
+  }
+
   /// Merges the two cells of the segment PQ shared by two components (or
   /// by two sides of one): `hp` is the boundary half-edge from P to Q of
   /// one side, `hm` the boundary half-edge from Q to P of the other.

@@ -77,19 +77,13 @@ public:
       for(int e = 0; e < 3; ++e)
         if(T.nbr[e] >= 0 && added_[T.nbr[e]]) shared[ns++] = e;
       CGAL_assertion(ns > 0);
-      // the corners of the grown shape at the ends of the first shared side
-      int corner[3] = {NO_INDEX, NO_INDEX, NO_INDEX};
-      {
-        const int e = shared[0];
-        const int h = sides_[T.nbr[e]][side_towards(T.nbr[e], t)];   // runs from v[e+2] to v[e+1]
-        corner[(e + 1) % 3] = engine_.target(h);
-        corner[(e + 2) % 3] = engine_.source(h);
-      }
-      sides_[t] = engine_.add_triangle(T.v, corner);
+      // placed at the corners of the grown shape along the first shared side
+      const int first = T.nbr[shared[0]];
+      sides_[t] = engine_.add_triangle_across(T.v, shared[0], sides_[first][side_towards(triangles_, first, t)]);
       added_[t] = 1;
       for(int i = 0; i < ns; ++i) {
         const int e = shared[i], u = T.nbr[e];
-        const Merge_statistics ms = engine_.merge(sides_[u][side_towards(u, t)], sides_[t][e], visitor);
+        const Merge_statistics ms = engine_.merge(sides_[u][side_towards(triangles_, u, t)], sides_[t][e], visitor);
         visitor.on_merge(ms);
         if(ms.max_queue > n_v) n_v = ms.max_queue;
       }
@@ -98,13 +92,6 @@ public:
   }
 
 private:
-  int side_towards(int u, int t) const
-  {
-    int e = 0;
-    while(triangles_[u].nbr[e] != t) ++e;
-    return e;
-  }
-
   // The triangle of largest area: the start of the growth.
   int largest_triangle() const
   {

@@ -40,6 +40,14 @@ struct Triangle {
   int nbr[3];
 };
 
+/// The side of triangle u shared with its neighbour t.
+inline int side_towards(const std::vector<Triangle>& triangles, int u, int t)
+{
+  int e = 0;
+  while(triangles[std::size_t(u)].nbr[e] != t) ++e;
+  return e;
+}
+
 /// Triangulates the polygon whose rings are the point ranges
 /// [ring_start[r], ring_start[r+1]) of `points`, consecutive along each ring,
 /// in the kernel of the points (with exact predicates): distinct input
