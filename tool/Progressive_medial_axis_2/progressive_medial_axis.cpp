@@ -303,8 +303,7 @@ int run(const Options& o)
     print_filter_statistics(Traits(), 0);
   }
   // The process ends right after the output (main() calls std::_Exit):
-  // the axis is left to the system rather than freed record by record,
-  // which takes a fifth of the time of a one-shot run.
+  // the axis is left to the system rather than freed record by record.
   if(pma) (void)pma.release();
   else (void)new Medial_axis(std::move(one_shot));
   return 0;
