@@ -30,6 +30,11 @@ add_test(NAME number_types COMMAND test_number_types)
 pma_add_test_program(test_api)
 add_test(NAME api COMMAND test_api $<TARGET_FILE:progressive_medial_axis> ${PMA_TEST_DATA})
 
+# What users do with an axis: significance (extended grassfire), pruning,
+# centerlines and width profiles, the maximum inscribed circle, Bezier arcs.
+pma_add_test_program(test_pruning)
+add_test(NAME pruning COMMAND test_pruning)
+
 # ThreadSanitizer: 4 threads read one result while 4 threads build 4 results
 # (test_api --threads), in a build of its own with -fsanitize=thread.
 option(PMA_SANITIZER_TESTS "Build and run the tests under sanitizers" ON)

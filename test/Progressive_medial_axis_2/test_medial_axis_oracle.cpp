@@ -11,6 +11,8 @@
 // and added to data/regressions/.
 
 #include <CGAL/Progressive_medial_axis_2.h>
+#include <CGAL/Progressive_medial_axis_2/Medial_axis_significance_2.h>
+#include <CGAL/Progressive_medial_axis_2/maximum_inscribed_circle_2.h>
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/CORE_Expr.h>
 #include <pma_tool/medial_axis_io.h>
@@ -29,6 +31,7 @@
 #include <cstdlib>
 #include <dirent.h>
 #include <iostream>
+#include <functional>
 #include <map>
 #include <sstream>
 #include <string>
@@ -128,8 +131,65 @@ public:
     CHECK(diff.ok(), what << " step " << step << ": pairs differ from the oracle (ours | oracle)\n"
                           << diff.report() << "  shape: " << wkt(oracle_rings));
     check_invariants(ma, step, what, shape_xy, oracle.bbox_diagonal, int(shape.size()) - 1);
+    check_inscribed_circle(ma, step, what, oracle, shape_xy);
+    if(input_names) check_pruning(ma, step, what, int(shape.size()) - 1);
     ++comparisons;
     return pma_test::failures() == before;
+  }
+
+  // The maximum inscribed circle: at least as large as the oracle's largest
+  // branch point, and an empty disk (its centre is as far from the boundary
+  // as its radius).  The oracle lists a point where four or more generators
+  // meet only with all its generators, so it can miss the largest one.
+  void check_inscribed_circle(const MA& ma, const std::string& step, const std::string& what,
+                              const pma_test::Oracle_result& oracle,
+                              const std::vector<std::vector<std::pair<double, double> > >& shape)
+  {
+    double best = 0;
+    for(const auto& b : oracle.branches) best = (std::max)(best, b.r);
+    const auto c = CGAL::maximum_inscribed_circle_2(ma);
+    const double r = CGAL::to_double(c.radius);
+    const auto p = MA::to_xy(c.center);
+    const double tol = 1e-9 * oracle.bbox_diagonal;
+    CHECK(r >= best - tol, what << " step " << step << ": maximum inscribed circle of radius " << r
+                                << ", the oracle has a branch point of radius " << best);
+    const double d = boundary_distance(shape, p.first, p.second);
+    CHECK(std::fabs(d - r) <= tol && (d <= tol || inside(shape, p.first, p.second)),
+          what << " step " << step << ": the maximum inscribed circle at (" << p.first << ", " << p.second
+               << ") of radius " << r << " is at distance " << d << " from the boundary");
+    CHECK(c.vertex && c.vertex.point() == c.center, what << " step " << step << ": the circle's vertex");
+  }
+
+  // Pruning keeps the topology of the shape: one component, one cycle per
+  // hole (or a single point).
+  void check_pruning(const MA& ma, const std::string& step, const std::string& what, int holes)
+  {
+    const CGAL::Medial_axis_significance_2<typename Traits::Kernel> sig(ma);
+    const double R = CGAL::to_double(CGAL::maximum_inscribed_circle_2(ma).radius);
+    const auto pruned = CGAL::prune_medial_axis_2(sig, 0.25 * R, 0.1);
+    std::map<std::size_t, int> node_of;
+    std::vector<int> parent;
+    auto add = [&]() { parent.push_back(int(parent.size())); return int(parent.size()) - 1; };
+    std::function<int(int)> find = [&](int x) { return parent[x] == x ? x : parent[x] = find(parent[x]); };
+    auto node = [&](const typename MA::Vertex_handle& v) {
+      auto it = node_of.find(v.id_number());
+      if(it != node_of.end()) return it->second;
+      return node_of[v.id_number()] = add();
+    };
+    int edges = 0;
+    for(const auto& c : pruned.curves()) {
+      const int a = c.cut_at_begin() ? add() : node(c.halfedge.source());
+      const int b = c.cut_at_end() ? add() : node(c.halfedge.target());
+      parent[find(a)] = find(b);
+      ++edges;
+    }
+    int components = 0;
+    for(int v = 0; v < int(parent.size()); ++v)
+      if(find(v) == v) ++components;
+    const bool point = pruned.curves().empty() && pruned.isolated_points().size() == 1 && holes == 0;
+    CHECK(point || (components == 1 && edges - int(parent.size()) + 1 == holes),
+          what << " step " << step << ": the pruned axis has " << components << " components and "
+               << (edges - int(parent.size()) + components) << " cycles, the shape " << holes << " holes");
   }
 
   void check_invariants(const MA& ma, const std::string& step, const std::string& what,

@@ -11,6 +11,9 @@
 #include <CGAL/Progressive_medial_axis_2.h>
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/CORE_Expr.h>
+#include <CGAL/Progressive_medial_axis_2/Medial_axis_significance_2.h>
+#include <CGAL/Progressive_medial_axis_2/Medial_axis_centerline_2.h>
+#include <CGAL/Progressive_medial_axis_2/maximum_inscribed_circle_2.h>
 
 #include <pma_tool/polygon_io.h>
 #include <pma_tool/medial_axis_io.h>
@@ -21,6 +24,9 @@
 #endif
 
 #include <chrono>
+#include <cmath>
+#include <functional>
+#include <memory>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
@@ -53,8 +59,21 @@ const char* usage_text =
   "  --frames-prefix P  file name prefix of the progressive pictures\n"
   "  --traits T         filtered (default: exact decisions), epick (double), exact (CORE::Expr)\n"
   "  --threads N        threads of the one-shot computation (default: all hardware threads)\n"
+  "  --prune SPEC       prune every axis output by erosion thickness (extended\n"
+  "                     grassfire): SPEC is et=T, ratio=Q or et=T,ratio=Q; keeps the\n"
+  "                     points with ET >= T (input units) and ET >= Q * EDF\n"
+  "  --centerline FILE  write the centerline as WKT (LINESTRING, or MULTILINESTRING\n"
+  "                     with holes), pruned by --prune or by default by et=R, R the\n"
+  "                     radius of the maximum inscribed circle\n"
+  "  --extend           extend the centerline's ends straight to the boundary\n"
+  "  --width FILE       write the centerline's width profile as CSV: s,x,y,width\n"
+  "  --inscribed-circle print 'circle X Y R': the maximum inscribed circle\n"
+  "  --tolerance D      distance within which WKT and GeoJSON polylines follow the\n"
+  "                     curves (default: 1e-6 of the shape's diagonal)\n"
   "  --stats            print the input size, step count, times and the largest n_v\n"
   "  --help             print this text\n";
+
+[[noreturn]] void usage_error(const std::string& msg);
 
 struct Options {
   bool pairs = false, branches = false, stats = false;
@@ -62,7 +81,45 @@ struct Options {
   std::string input, shape_out, svg, geojson, wkt_out, frames_prefix, traits = "filtered";
   int frames = 0;
   int threads = 0;   // 0: all hardware threads
+  bool prune = false, extend = false, inscribed_circle = false;
+  double prune_et = 0, prune_ratio = 0, tolerance = -1;
+  std::string centerline, width;
 };
+
+// a finite number >= 0 from option text
+double parse_number(const std::string& option, const std::string& v)
+{
+  char* end = nullptr;
+  const double x = std::strtod(v.c_str(), &end);
+  if(v.empty() || *end != '\0' || !std::isfinite(x) || x < 0)
+    usage_error(option + " needs a finite number >= 0, got '" + v + "'");
+  return x;
+}
+
+// --prune et=T | ratio=Q | et=T,ratio=Q
+void parse_prune(Options& o, const std::string& spec)
+{
+  o.prune = true;
+  std::size_t start = 0;
+  bool any = false;
+  while(start <= spec.size()) {
+    const std::size_t comma = spec.find(',', start);
+    const std::string item = spec.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
+    const std::size_t eq = item.find('=');
+    const std::string key = item.substr(0, eq), value = eq == std::string::npos ? "" : item.substr(eq + 1);
+    if(eq == std::string::npos || (key != "et" && key != "ratio"))
+      usage_error("--prune needs et=T, ratio=Q or et=T,ratio=Q, got '" + spec + "'");
+    if(key == "et") o.prune_et = parse_number("--prune et", value);
+    else {
+      o.prune_ratio = parse_number("--prune ratio", value);
+      if(o.prune_ratio >= 1) usage_error("--prune ratio needs a number from 0 to less than 1, got '" + value + "'");
+    }
+    any = true;
+    if(comma == std::string::npos) break;
+    start = comma + 1;
+  }
+  if(!any) usage_error("--prune needs et=T, ratio=Q or et=T,ratio=Q");
+}
 
 [[noreturn]] void usage_error(const std::string& msg)
 {
@@ -107,6 +164,15 @@ Options parse(int argc, char** argv)
       long n = std::strtol(v.c_str(), &end, 10);
       if(v.empty() || *end != '\0' || n < 1 || n > 4096) usage_error("--threads needs an integer from 1 to 4096, got '" + v + "'");
       o.threads = int(n);
+    }
+    else if(a == "--prune") parse_prune(o, value("--prune"));
+    else if(a == "--centerline") o.centerline = value("--centerline");
+    else if(a == "--width") o.width = value("--width");
+    else if(a == "--extend") o.extend = true;
+    else if(a == "--inscribed-circle") o.inscribed_circle = true;
+    else if(a == "--tolerance") {
+      o.tolerance = parse_number("--tolerance", value("--tolerance"));
+      if(!(o.tolerance > 0)) usage_error("--tolerance needs a number > 0");
     }
     else if(a == "--traits") {
       o.traits = value("--traits");
@@ -260,21 +326,63 @@ int run(const Options& o)
     pma_tool::write_wkt_polygon(f, out);
     f << "\n";
   }
+  // significance, pruning and centerline (timed together: time_prune)
+  typedef typename Traits::Kernel Kernel;
+  const auto tp = std::chrono::steady_clock::now();
+  const bool centerline = !o.centerline.empty() || !o.width.empty();
+  std::unique_ptr<CGAL::Medial_axis_significance_2<Kernel> > significance;
+  std::unique_ptr<CGAL::Pruned_medial_axis_2<Kernel> > pruned;
+  std::unique_ptr<CGAL::Medial_axis_centerline_2<Kernel> > center;
+  if(o.prune || centerline) {
+    significance.reset(new CGAL::Medial_axis_significance_2<Kernel>(ma));
+    double et = o.prune_et, ratio = o.prune_ratio;
+    if(!o.prune) {   // the default pruning of a centerline: et = the largest radius
+      et = CGAL::to_double(CGAL::maximum_inscribed_circle_2(ma).radius);
+      ratio = 0;
+    }
+    pruned.reset(new CGAL::Pruned_medial_axis_2<Kernel>(CGAL::prune_medial_axis_2(*significance, et, ratio)));
+    if(centerline) center.reset(new CGAL::Medial_axis_centerline_2<Kernel>(CGAL::medial_axis_centerline_2(*pruned, o.extend)));
+  }
+  const double prune_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - tp).count();
+  typedef typename Medial_axis::Vertex_handle Vertex;
+  const auto parts = o.prune ? pma_tool::axis_parts(*pruned) : pma_tool::axis_parts(ma);
+  std::function<bool(const Vertex&)> keep;
+  if(o.prune) keep = [&](const Vertex& v) { return pruned->is_kept(v); };
+
   if(o.pairs)
-    pma_tool::write_pairs(std::cout, pma_tool::named_curves(ma, names));
+    pma_tool::write_pairs(std::cout, pma_tool::named_curves(parts, names));
   if(o.branches)
-    pma_tool::write_branches(std::cout, pma_tool::named_branches(ma, names, 1e-12 * pma_tool::bbox_diagonal(ma)));
+    pma_tool::write_branches(std::cout, pma_tool::named_branches(ma, names, 1e-12 * pma_tool::bbox_diagonal(ma), keep));
+  if(o.inscribed_circle) {
+    const auto c = CGAL::maximum_inscribed_circle_2(ma);
+    const auto p = Medial_axis::to_xy(c.center);
+    std::printf("circle %.17g %.17g %.17g\n", p.first, p.second, CGAL::to_double(c.radius));
+  }
   if(!o.svg.empty()) {
     std::ofstream f = open_out(o.svg);
-    pma_tool::write_svg(f, ma, "");
+    pma_tool::write_svg(f, ma, parts, keep, "");
   }
   if(!o.geojson.empty()) {
     std::ofstream f = open_out(o.geojson);
-    pma_tool::write_geojson(f, ma, names);
+    pma_tool::write_geojson(f, ma, parts, keep, names, o.tolerance);
   }
   if(!o.wkt_out.empty()) {
     std::ofstream f = open_out(o.wkt_out);
-    pma_tool::write_wkt_axis(f, ma);
+    pma_tool::write_wkt_axis(f, ma, parts, o.tolerance);
+  }
+  if(!o.centerline.empty()) {
+    std::ofstream f = open_out(o.centerline);
+    const double tol = o.tolerance > 0 ? o.tolerance : 1e-6 * pma_tool::shape_box(ma).diagonal();
+    const auto lines = center->polylines(tol);
+    const bool single = center->paths().size() == 1 && !center->paths()[0].closed;
+    pma_tool::write_wkt_lines(f, lines, !single);
+  }
+  if(!o.width.empty()) {
+    std::ofstream f = open_out(o.width);
+    f << "s,x,y,width\n";
+    for(const auto& w : center->width_profile())
+      f << pma_tool::format_double(w.s) << ',' << pma_tool::format_double(w.x) << ',' << pma_tool::format_double(w.y)
+        << ',' << pma_tool::format_double(w.width) << '\n';
   }
   if(o.stats) {
     const CGAL::Progressive_medial_axis_statistics& s = progressive ? pma->statistics() : one_shot_stats;
@@ -301,9 +409,15 @@ int run(const Options& o)
     std::printf("redone_merges %zu\n", s.redone_merges);
     std::printf("medial_curves %zu\nbranch_vertices %zu\n", ma.number_of_edges(), nb);
     print_filter_statistics(Traits(), 0);
+    if(o.prune) std::printf("pruned_curves %zu\n", pruned->number_of_pruned_curves());
+    if(center) std::printf("centerline_length %.17g\n", center->length());
+    if(pruned) std::printf("time_prune %.6f\n", prune_seconds);
   }
   // The process ends right after the output (main() calls std::_Exit):
   // the axis is left to the system rather than freed record by record.
+  (void)significance.release();
+  (void)pruned.release();
+  (void)center.release();
   if(pma) (void)pma.release();
   else (void)new Medial_axis(std::move(one_shot));
   return 0;

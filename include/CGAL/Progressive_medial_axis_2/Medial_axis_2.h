@@ -20,6 +20,8 @@
 #include <CGAL/enum.h>
 
 #include <algorithm>
+#include <array>
+#include <cmath>
 #include <cstddef>
 #include <functional>
 #include <iterator>
@@ -321,6 +323,41 @@ public:
     std::vector<std::pair<double, double> > polyline(double tolerance) const
     {
       return curve(d_, h_).polyline(tolerance);
+    }
+    /// the point at arc length `s` from source() (0 <= s <= length(); in double)
+    std::pair<double, double> point_at(double s) const { return curve(d_, h_).point_at_length(s); }
+    /// the unit tangent at arc length `s` from source(), pointing towards target()
+    std::pair<double, double> tangent_at(double s) const { return curve(d_, h_).tangent_at_length(s); }
+    /// the radius of the maximal disk centred at arc length `s` from source()
+    /// (the distance to the generator of face(); in double)
+    double radius_at(double s) const { return distance_to_point(point_at(s)); }
+    /// the distance from a point to the generator of face() (in double)
+    double distance_to_point(const std::pair<double, double>& q) const
+    {
+      return distance_to_generator(d_, d_->hds.face_of(h_), q);
+    }
+    /// \cond
+    // the curve in double precision (for the functions of the package that
+    // walk along curves: significance and centerlines)
+    Progressive_medial_axes::internal::Curve geometry() const { return curve(d_, h_); }
+    /// \endcond
+    /// the part of the curve between arc lengths `s0` < `s1` from source(),
+    /// as a polyline within `tolerance` of the curve; an end at 0 or at
+    /// length() is the vertex itself
+    std::vector<std::pair<double, double> > polyline(double tolerance, double s0, double s1) const
+    {
+      const auto c = curve(d_, h_);
+      return (s0 > 0 || s1 < c.length() ? c.part(s0, s1) : c).polyline(tolerance);
+    }
+    /// the part of the curve between arc lengths `s0` < `s1` from source() as
+    /// a quadratic Bezier curve {start, control point, end}: exactly the
+    /// curve for a parabolic arc and for a line segment (whose control point
+    /// is the middle)
+    std::array<std::pair<double, double>, 3> quadratic_bezier(double s0, double s1) const
+    {
+      auto c = curve(d_, h_);
+      if(s0 > 0 || s1 < c.length()) c = c.part(s0, s1);
+      return {{c.a, c.bezier_control_point(), c.b}};
     }
     /// a number that identifies the half-edge while it lives
     std::size_t id_number() const { return std::size_t(h_); }
@@ -659,6 +696,24 @@ private:
       c.set_parabola(to_xy(d->points[P.p0]), to_xy(d->points[S.p0]), to_xy(d->points[S.p1]));
     }
     return c;
+  }
+
+  // Distance from (x, y) to the generator of cell f, in double, in a frame
+  // scaled to the points so that neither squares nor products overflow.
+  static double distance_to_generator(const Data* d, int f, const std::pair<double, double>& q)
+  {
+    if(f < 0) return 0;
+    const auto& F = d->hds.face(f);
+    const auto a = to_xy(d->points[F.p0]), b = to_xy(d->points[F.p1]);
+    const double sc = (std::max)({std::fabs(a.first), std::fabs(a.second), std::fabs(b.first), std::fabs(b.second),
+                                  std::fabs(q.first), std::fabs(q.second)});
+    if(!(sc > 0)) return 0;
+    const double ax = a.first / sc, ay = a.second / sc, bx = b.first / sc, by = b.second / sc;
+    const double px = q.first / sc, py = q.second / sc;
+    const double dx = bx - ax, dy = by - ay, l2 = dx * dx + dy * dy;
+    double t = l2 > 0 ? ((px - ax) * dx + (py - ay) * dy) / l2 : 0;
+    t = (std::min)(1.0, (std::max)(0.0, t));
+    return std::hypot(px - ax - t * dx, py - ay - t * dy) * sc;
   }
 
   std::shared_ptr<const Data> d_;

@@ -88,6 +88,103 @@ struct Curve {
     return std::fabs(arc(abscissa(b)) - arc(abscissa(a))) * scale;
   }
 
+  // abscissa (scaled frame) of the point at arc length s from a, on a
+  // parabolic arc: Newton's method on the arc length (convex in |x|, slope
+  // sqrt(x^2 + h^2) / h >= 1), kept inside a bracket that shrinks
+  double abscissa_at_length(double s) const
+  {
+    const double xa = abscissa(a), xb = abscissa(b);
+    const double target = s / scale, a0 = arc(xa);
+    const double dir = xb >= xa ? 1.0 : -1.0;
+    double lo = 0, hi = std::fabs(xb - xa);
+    double u = (std::min)(hi, target);   // the arc is at least as long as the abscissa span
+    for(int i = 0; i < 100; ++i) {
+      const double x = xa + dir * u;
+      const double f = std::fabs(arc(x) - a0) - target;
+      if(f < 0) lo = u;
+      else hi = u;
+      double next = u - f * h / std::hypot(x, h);
+      if(!(next > lo && next < hi)) next = 0.5 * (lo + hi);
+      if(next == u || hi - lo <= 1e-15 * (std::fabs(xa) + std::fabs(xb) + h)) break;
+      u = next;
+    }
+    return xa + dir * u;
+  }
+
+  /// The point at parameter u in [0, 1]: the abscissa goes linearly from a
+  /// to b on a parabolic arc, the point itself on a segment.
+  Point point_at_parameter(double u) const
+  {
+    if(!parabolic)
+      return Point(a.first + (b.first - a.first) * u, a.second + (b.second - a.second) * u);
+    const double xa = abscissa(a), xb = abscissa(b);
+    return at(xa + (xb - xa) * u);
+  }
+
+  /// The arc length from a to the point at parameter u.
+  double length_at_parameter(double u) const
+  {
+    if(!parabolic) return length() * u;
+    const double xa = abscissa(a), xb = abscissa(b);
+    return std::fabs(arc(xa + (xb - xa) * u) - arc(xa)) * scale;
+  }
+
+  /// The point at arc length s from a (0 <= s <= length()).
+  Point point_at_length(double s) const
+  {
+    const double L = length();
+    if(!(s > 0)) return a;
+    if(!(s < L)) return b;
+    if(!parabolic) {
+      const double t = s / L;
+      return Point(a.first + (b.first - a.first) * t, a.second + (b.second - a.second) * t);
+    }
+    return at(abscissa_at_length(s));
+  }
+
+  /// The unit tangent at arc length s, in the direction from a to b.
+  Point tangent_at_length(double s) const
+  {
+    double dx, dy;
+    if(!parabolic) {
+      dx = b.first - a.first;
+      dy = b.second - a.second;
+    } else {
+      const double x = abscissa_at_length((std::min)((std::max)(s, 0.0), length()));
+      const double dir = abscissa(b) >= abscissa(a) ? 1.0 : -1.0;
+      const double slope = x / h;   // dy/dx of y = (x^2 + h^2) / (2h)
+      dx = dir * (tx + slope * nx);
+      dy = dir * (ty + slope * ny);
+    }
+    const double n = std::hypot(dx, dy);
+    return n > 0 ? Point(dx / n, dy / n) : Point(0, 0);
+  }
+
+  /// The part of the curve between arc lengths s0 < s1 from a.
+  Curve part(double s0, double s1) const
+  {
+    Curve c = *this;
+    const Point p0 = point_at_length(s0), p1 = point_at_length(s1);
+    c.a = p0;
+    c.b = p1;
+    return c;
+  }
+
+  /// The control point of the quadratic Bezier curve from a to b that is
+  /// this curve: a parabolic arc is exactly such a curve (the middle of the
+  /// chord for a segment).
+  Point bezier_control_point() const
+  {
+    if(!parabolic) return Point(0.5 * (a.first + b.first), 0.5 * (a.second + b.second));
+    // in the frame of the directrix the arc is x -> (x, (x^2 + h^2) / (2h)),
+    // a polynomial of degree 2: its control point lies on the tangent at a,
+    // above the middle abscissa
+    const double x0 = abscissa(a), x1 = abscissa(b);
+    const double xc = 0.5 * (x0 + x1);
+    const double yc = (x0 * x0 + h * h) / (2.0 * h) + (x0 / h) * (xc - x0);
+    return Point((fx + xc * tx + yc * nx) * scale, (fy + xc * ty + yc * ny) * scale);
+  }
+
   /// Points from a to b whose polyline stays within `tolerance` of the
   /// curve: a segment gives its two ends; a parabolic arc is cut into
   /// pieces whose sagitta (width^2 / (16 h) for a piece of width w of a

@@ -10,6 +10,7 @@
 #include <pma_tool/medial_axis_io.h>
 
 #include <algorithm>
+#include <functional>
 #include <cmath>
 #include <ostream>
 #include <string>
@@ -35,15 +36,18 @@ inline std::string xml_escape(const std::string& s)
 } // namespace internal
 
 /*!
-Draws the shape of `ma` and its medial axis as an SVG picture of about
-`width` pixels: the shape filled, straight curves in blue, parabolic arcs in
-red, branch points as dots.  `title` is written in a corner.  With
-`show_input`, the outline of the whole input polygon is drawn in grey behind
-(useful for the steps of a progressive computation).
+Draws the shape of `ma` and the curves `parts` of its medial axis (all of
+them, or the kept parts of a pruned axis) as an SVG picture of about `width`
+pixels: the shape filled, straight curves in blue (`L`), parabolic arcs in
+red, each as the quadratic Bezier curve that is that arc (`Q`), and the
+branch points that `keep` keeps (all if empty) as dots.  `title` is written
+in a corner.  With `show_input`, the outline of the whole input polygon is
+drawn in grey behind (useful for the steps of a progressive computation).
 */
 template <class Medial_axis>
-void write_svg(std::ostream& out, const Medial_axis& ma, const std::string& title, double width = 1000,
-               bool show_input = false)
+void write_svg(std::ostream& out, const Medial_axis& ma, const std::vector<Axis_part<Medial_axis> >& parts,
+               const std::function<bool(const typename Medial_axis::Vertex_handle&)>& keep, const std::string& title,
+               double width = 1000, bool show_input = false)
 {
   Box box = shape_box(ma);
   if(show_input) {
@@ -59,8 +63,7 @@ void write_svg(std::ostream& out, const Medial_axis& ma, const std::string& titl
   const double W = w * scale + 2 * margin, H = h * scale + 2 * margin;
   auto X = [&](double x) { return margin + (x - box.x0) * scale; };
   auto Y = [&](double y) { return margin + (box.y1 - y) * scale; };
-  const double tol = 0.25 / scale;   // a quarter pixel
-  char buf[128];
+  char buf[160];
   out << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << W << "\" height=\"" << H
       << "\" viewBox=\"0 0 " << W << ' ' << H << "\">\n";
   out << "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
@@ -92,19 +95,23 @@ void write_svg(std::ostream& out, const Medial_axis& ma, const std::string& titl
   for(int kind = 0; kind < 2; ++kind) {
     out << "<path fill=\"none\" stroke=\"" << (kind == 0 ? "#1f5fbf" : "#c0392b")
         << "\" stroke-width=\"1\" d=\"";
-    for(const auto& e : ma.edges()) {
-      if((e.curve_kind() == Medial_axis::PARABOLIC_ARC) != (kind == 1)) continue;
-      auto pl = e.polyline(tol);
-      for(std::size_t i = 0; i < pl.size(); ++i) {
-        std::snprintf(buf, sizeof(buf), "%c%.2f %.2f", i == 0 ? 'M' : 'L', X(pl[i].first), Y(pl[i].second));
-        out << buf;
-      }
+    for(const auto& p : parts) {
+      const bool parabola = p.h.curve_kind() == Medial_axis::PARABOLIC_ARC;
+      if(parabola != (kind == 1)) continue;
+      const auto b = p.bezier();
+      if(parabola)
+        std::snprintf(buf, sizeof(buf), "M%.2f %.2fQ%.2f %.2f %.2f %.2f", X(b[0].first), Y(b[0].second),
+                      X(b[1].first), Y(b[1].second), X(b[2].first), Y(b[2].second));
+      else
+        std::snprintf(buf, sizeof(buf), "M%.2f %.2fL%.2f %.2f", X(b[0].first), Y(b[0].second), X(b[2].first),
+                      Y(b[2].second));
+      out << buf;
     }
     out << "\"/>\n";
   }
   out << "<g fill=\"#202020\">\n";
   for(const auto& v : ma.vertices()) {
-    if(v.kind() != Medial_axis::BRANCH_POINT) continue;
+    if(v.kind() != Medial_axis::BRANCH_POINT || (keep && !keep(v))) continue;
     auto p = Medial_axis::to_xy(v.point());
     std::snprintf(buf, sizeof(buf), "<circle cx=\"%.2f\" cy=\"%.2f\" r=\"1.2\"/>\n", X(p.first), Y(p.second));
     out << buf;
@@ -117,31 +124,46 @@ void write_svg(std::ostream& out, const Medial_axis& ma, const std::string& titl
   out << "</svg>\n";
 }
 
+/// Draws the shape of `ma` and its whole medial axis (see above).
+template <class Medial_axis>
+void write_svg(std::ostream& out, const Medial_axis& ma, const std::string& title, double width = 1000,
+               bool show_input = false)
+{
+  write_svg(out, ma, axis_parts(ma), {}, title, width, show_input);
+}
+
 /*!
-Writes the medial axis as a GeoJSON FeatureCollection: one LineString per
-medial curve (properties: the two generator ids, `line` or `parabola`, the
-length) sampled within `tolerance` (default 1e-6 of the shape's diagonal),
-and one Point per branch point (properties: generator ids, radius).
+Writes the curves `parts` of a medial axis as a GeoJSON FeatureCollection:
+one LineString per curve (properties: the two generator ids, `line` or
+`parabola`, the length; for a pruned axis, the erosion thickness at both
+ends, `et`, null where infinite) sampled within `tolerance` (default 1e-6
+of the shape's diagonal), and one Point per branch point that `keep` keeps
+(properties: generator ids, radius).
 */
 template <class Medial_axis, class Names>
-void write_geojson(std::ostream& out, const Medial_axis& ma, const Names& names, double tolerance = -1)
+void write_geojson(std::ostream& out, const Medial_axis& ma, const std::vector<Axis_part<Medial_axis> >& parts,
+                   const std::function<bool(const typename Medial_axis::Vertex_handle&)>& keep, const Names& names,
+                   double tolerance = -1)
 {
   if(tolerance <= 0) tolerance = 1e-6 * shape_box(ma).diagonal();
+  auto number = [](double v) { return std::isfinite(v) ? format_double(v) : std::string("null"); };
   out << "{\"type\":\"FeatureCollection\",\"features\":[\n";
   bool first = true;
-  for(const auto& e : ma.edges()) {
-    std::string a = names(e.first_generator()), b = names(e.second_generator());
+  for(const auto& p : parts) {
+    std::string a = names(p.h.first_generator()), b = names(p.h.second_generator());
     if(b < a) std::swap(a, b);
     out << (first ? "" : ",\n") << "{\"type\":\"Feature\",\"properties\":{\"generators\":[\"" << a << "\",\"" << b
-        << "\"],\"curve\":\"" << (e.curve_kind() == Medial_axis::PARABOLIC_ARC ? "parabola" : "line")
-        << "\",\"length\":" << format_double(e.length()) << "},\"geometry\":{\"type\":\"LineString\",\"coordinates\":[";
-    auto pl = e.polyline(tolerance);
+        << "\"],\"curve\":\"" << (p.h.curve_kind() == Medial_axis::PARABOLIC_ARC ? "parabola" : "line")
+        << "\",\"length\":" << format_double(p.length());
+    if(p.with_et) out << ",\"et\":[" << number(p.et_begin) << ',' << number(p.et_end) << ']';
+    out << "},\"geometry\":{\"type\":\"LineString\",\"coordinates\":[";
+    auto pl = p.polyline(tolerance);
     for(std::size_t i = 0; i < pl.size(); ++i)
       out << (i ? "," : "") << '[' << format_double(pl[i].first) << ',' << format_double(pl[i].second) << ']';
     out << "]}}";
     first = false;
   }
-  for(const auto& br : named_branches(ma, names, 1e-12 * shape_box(ma).diagonal())) {
+  for(const auto& br : named_branches(ma, names, 1e-12 * shape_box(ma).diagonal(), keep)) {
     out << (first ? "" : ",\n") << "{\"type\":\"Feature\",\"properties\":{\"generators\":[";
     for(std::size_t i = 0; i < br.generators.size(); ++i)
       out << (i ? "," : "") << '"' << br.generators[i] << '"';
@@ -152,25 +174,51 @@ void write_geojson(std::ostream& out, const Medial_axis& ma, const Names& names,
   out << "\n]}\n";
 }
 
-/*!
-Writes the medial axis as one WKT MULTILINESTRING, curves sampled within
-`tolerance` (default 1e-6 of the shape's diagonal).
-*/
-template <class Medial_axis>
-void write_wkt_axis(std::ostream& out, const Medial_axis& ma, double tolerance = -1)
+template <class Medial_axis, class Names>
+void write_geojson(std::ostream& out, const Medial_axis& ma, const Names& names, double tolerance = -1)
 {
-  if(tolerance <= 0) tolerance = 1e-6 * shape_box(ma).diagonal();
-  out << "MULTILINESTRING (";
+  write_geojson(out, ma, axis_parts(ma), {}, names, tolerance);
+}
+
+/// Writes polylines as one WKT MULTILINESTRING.
+inline void write_wkt_lines(std::ostream& out, const std::vector<std::vector<std::pair<double, double> > >& lines,
+                            bool multi = true)
+{
+  out << (multi ? "MULTILINESTRING " : "LINESTRING ");
+  if(multi && !lines.empty()) out << '(';
   bool first = true;
-  for(const auto& e : ma.edges()) {
-    auto pl = e.polyline(tolerance);
+  for(const auto& pl : lines) {
     out << (first ? "(" : ", (");
     for(std::size_t i = 0; i < pl.size(); ++i)
       out << (i ? ", " : "") << format_double(pl[i].first) << ' ' << format_double(pl[i].second);
     out << ')';
     first = false;
   }
-  out << ")\n";
+  if(lines.empty()) {
+    out << "EMPTY\n";
+    return;
+  }
+  out << (multi ? ")\n" : "\n");
+}
+
+/*!
+Writes the curves `parts` of a medial axis as one WKT MULTILINESTRING,
+sampled within `tolerance` (default 1e-6 of the shape's diagonal).
+*/
+template <class Medial_axis>
+void write_wkt_axis(std::ostream& out, const Medial_axis& ma, const std::vector<Axis_part<Medial_axis> >& parts,
+                    double tolerance = -1)
+{
+  if(tolerance <= 0) tolerance = 1e-6 * shape_box(ma).diagonal();
+  std::vector<std::vector<std::pair<double, double> > > lines;
+  for(const auto& p : parts) lines.push_back(p.polyline(tolerance));
+  write_wkt_lines(out, lines);
+}
+
+template <class Medial_axis>
+void write_wkt_axis(std::ostream& out, const Medial_axis& ma, double tolerance = -1)
+{
+  write_wkt_axis(out, ma, axis_parts(ma), tolerance);
 }
 
 } // namespace pma_tool

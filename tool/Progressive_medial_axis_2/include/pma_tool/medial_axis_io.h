@@ -9,8 +9,11 @@
 #define PMA_TOOL_MEDIAL_AXIS_IO_H
 
 #include <CGAL/Progressive_medial_axis_2/Medial_axis_2.h>
+#include <CGAL/Progressive_medial_axis_2/Medial_axis_significance_2.h>
 
 #include <algorithm>
+#include <array>
+#include <functional>
 #include <cmath>
 #include <cstdio>
 #include <map>
@@ -68,6 +71,57 @@ private:
   std::map<Input_vertex, std::pair<int, int> > position_;
 };
 
+/// A medial curve of an output, or the part of it that a pruning keeps:
+/// arc lengths `begin` to `end` from the source of `h`, with the erosion
+/// thickness at both ends when the axis is pruned.
+template <class Medial_axis>
+struct Axis_part {
+  typename Medial_axis::Halfedge_handle h;
+  double begin = 0, end = 0;
+  bool whole = true;
+  bool with_et = false;
+  double et_begin = 0, et_end = 0;
+  double length() const { return whole ? h.length() : end - begin; }
+  std::vector<std::pair<double, double> > polyline(double tolerance) const
+  {
+    return whole ? h.polyline(tolerance) : h.polyline(tolerance, begin, end);
+  }
+  std::array<std::pair<double, double>, 3> bezier() const { return h.quadratic_bezier(begin, end); }
+};
+
+/// Every medial curve of `ma`, whole.
+template <class Medial_axis>
+std::vector<Axis_part<Medial_axis> > axis_parts(const Medial_axis& ma)
+{
+  std::vector<Axis_part<Medial_axis> > out;
+  for(const auto& e : ma.edges()) {
+    Axis_part<Medial_axis> p;
+    p.h = e;
+    p.end = e.length();
+    out.push_back(p);
+  }
+  return out;
+}
+
+/// The kept parts of a pruned axis.
+template <class K>
+std::vector<Axis_part<CGAL::Medial_axis_2<K> > > axis_parts(const CGAL::Pruned_medial_axis_2<K>& pruned)
+{
+  std::vector<Axis_part<CGAL::Medial_axis_2<K> > > out;
+  for(const auto& c : pruned.curves()) {
+    Axis_part<CGAL::Medial_axis_2<K> > p;
+    p.h = c.halfedge;
+    p.begin = c.begin;
+    p.end = c.end;
+    p.whole = !c.cut_at_begin() && !c.cut_at_end();
+    p.with_et = true;
+    p.et_begin = c.et_begin;
+    p.et_end = c.et_end;
+    out.push_back(p);
+  }
+  return out;
+}
+
 /// One medial curve, named.
 struct Named_curve {
   std::string a, b;   // a < b
@@ -80,15 +134,15 @@ struct Named_branch {
   double x, y, r;
 };
 
-/// The medial curves of `ma`, sorted.
+/// The curves (or kept parts of curves) `parts`, sorted.
 template <class Medial_axis, class Names>
-std::vector<Named_curve> named_curves(const Medial_axis& ma, const Names& names)
+std::vector<Named_curve> named_curves(const std::vector<Axis_part<Medial_axis> >& parts, const Names& names)
 {
   std::vector<Named_curve> out;
-  for(const auto& e : ma.edges()) {
-    std::string a = names(e.first_generator()), b = names(e.second_generator());
+  for(const auto& p : parts) {
+    std::string a = names(p.h.first_generator()), b = names(p.h.second_generator());
     if(b < a) std::swap(a, b);
-    out.push_back(Named_curve{a, b, e.length()});
+    out.push_back(Named_curve{a, b, p.length()});
   }
   std::sort(out.begin(), out.end(), [](const Named_curve& x, const Named_curve& y) {
     if(x.a != y.a) return x.a < y.a;
@@ -98,18 +152,27 @@ std::vector<Named_curve> named_curves(const Medial_axis& ma, const Names& names)
   return out;
 }
 
-/// The branch points of `ma` (vertices where three or more curves meet).
+/// The medial curves of `ma`, sorted.
+template <class Medial_axis, class Names>
+std::vector<Named_curve> named_curves(const Medial_axis& ma, const Names& names)
+{
+  return named_curves(axis_parts(ma), names);
+}
+
+/// The branch points of `ma` (vertices where three or more curves meet)
+/// that `keep` keeps (all if it is empty).
 /// Branch points joined by a curve shorter than `merge_distance` are
 /// reported once, with all their generators (a point where four or more
 /// generators meet is one vertex already; this also merges the nearly
 /// coincident vertices of the double model).
 template <class Medial_axis, class Names>
-std::vector<Named_branch> named_branches(const Medial_axis& ma, const Names& names, double merge_distance)
+std::vector<Named_branch> named_branches(const Medial_axis& ma, const Names& names, double merge_distance,
+                                         const std::function<bool(const typename Medial_axis::Vertex_handle&)>& keep = {})
 {
   typedef typename Medial_axis::Vertex_handle Vertex;
   std::map<Vertex, Vertex> parent;
   for(const auto& v : ma.vertices())
-    if(v.kind() == Medial_axis::BRANCH_POINT) parent[v] = v;
+    if(v.kind() == Medial_axis::BRANCH_POINT && (!keep || keep(v))) parent[v] = v;
   auto find = [&](Vertex x) {
     while(parent[x] != x) x = parent[x] = parent[parent[x]];
     return x;

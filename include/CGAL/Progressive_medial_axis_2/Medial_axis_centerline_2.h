@@ -1,0 +1,443 @@
+// Copyright (c) 2026 The Progressive_medial_axis_2 authors.
+// All rights reserved.
+//
+// This file is part of CGAL (www.cgal.org).
+//
+// $URL$
+// $Id$
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+//
+// Author(s)     : The Progressive_medial_axis_2 authors
+
+#ifndef CGAL_PROGRESSIVE_MEDIAL_AXIS_2_MEDIAL_AXIS_CENTERLINE_2_H
+#define CGAL_PROGRESSIVE_MEDIAL_AXIS_2_MEDIAL_AXIS_CENTERLINE_2_H
+
+#include <CGAL/license/Progressive_medial_axis_2.h>
+
+#include <CGAL/Progressive_medial_axis_2/Medial_axis_significance_2.h>
+
+#include <algorithm>
+#include <cmath>
+#include <deque>
+#include <functional>
+#include <limits>
+#include <map>
+#include <queue>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+
+/*!
+\ingroup PkgProgressiveMedialAxis2Ref
+
+The centerline of a shape: paths along its pruned medial axis, made by
+`medial_axis_centerline_2()`.
+
+A shape without holes has one path: the longest path of the pruned axis
+between two of its ends.  With holes (a braided river: channels around
+islands), a hydrologist expects every channel: the centerline is the pruned
+axis without its side branches, that is the cycles around the holes, the
+curves that join them, and the paths from them to the two ends of the
+longest path (the two ends farthest apart along the axis: the river's
+source and mouth).  It is then given as several paths, the maximal chains
+between its junctions.
+
+A path is a sequence of parts of medial curves; with `extend`, a path that
+ends at an end of the centerline is prolonged from it, along the curve's
+direction there, by a straight segment up to the boundary of the shape.
+*/
+template <class K>
+class Medial_axis_centerline_2
+{
+public:
+  typedef Medial_axis_2<K> Medial_axis;
+  typedef typename Medial_axis::Halfedge_handle Halfedge_handle;
+  typedef std::pair<double, double> Point;
+
+  /// A part of a medial curve, walked from arc length `from` to `to`
+  /// (both from `halfedge.source()`; `from > to` walks it backwards).
+  struct Piece {
+    Halfedge_handle halfedge;
+    double from = 0, to = 0;
+    double length() const { return std::fabs(to - from); }
+  };
+  /// One path of the centerline.
+  struct Path {
+    std::vector<Piece> pieces;
+    bool has_start_extension = false, has_end_extension = false;
+    Point start_extension, end_extension;  ///< the points on the boundary that the extensions reach
+    bool closed = false;                   ///< a cycle around a hole
+  };
+  /// A sample of the width profile.
+  struct Width_sample {
+    double s;     ///< arc length from the start of the path (extension included)
+    double x, y;  ///< the point
+    double width; ///< twice the radius of the maximal disk there
+    std::size_t path; ///< index of the path
+  };
+
+  const std::vector<Path>& paths() const { return paths_; }
+  bool is_empty() const { return paths_.empty(); }
+
+  /// The first and last point of a path.
+  Point start_point(const Path& p) const
+  {
+    if(p.has_start_extension) return p.start_extension;
+    return point_of(p.pieces.front(), p.pieces.front().from);
+  }
+
+  /// The length of a path, extensions included.
+  double length(const Path& p) const
+  {
+    double l = 0;
+    for(const Piece& x : p.pieces) l += x.length();
+    if(p.has_start_extension) l += distance(p.start_extension, point_of(p.pieces.front(), p.pieces.front().from));
+    if(p.has_end_extension) l += distance(p.end_extension, point_of(p.pieces.back(), p.pieces.back().to));
+    return l;
+  }
+  /// The total length of the centerline.
+  double length() const
+  {
+    double l = 0;
+    for(const Path& p : paths_) l += length(p);
+    return l;
+  }
+
+  /// The paths as polylines within `tolerance` of the curves.
+  std::vector<std::vector<Point> > polylines(double tolerance) const
+  {
+    std::vector<std::vector<Point> > out;
+    for(const Path& p : paths_) {
+      std::vector<Point> line;
+      if(p.has_start_extension) line.push_back(p.start_extension);
+      for(std::size_t i = 0; i < p.pieces.size(); ++i) {
+        const Piece& x = p.pieces[i];
+        std::vector<Point> part = x.halfedge.polyline(tolerance, (std::min)(x.from, x.to), (std::max)(x.from, x.to));
+        if(x.from > x.to) std::reverse(part.begin(), part.end());
+        // consecutive pieces share their end point: written once
+        line.insert(line.end(), part.begin() + (i == 0 ? 0 : 1), part.end());
+      }
+      if(p.has_end_extension) line.push_back(p.end_extension);
+      out.push_back(line);
+    }
+    return out;
+  }
+
+  /// The width profile: arc length, point and width (2R) at every vertex of
+  /// the centerline and at least every tenth of the local width.  On an
+  /// extension the width is twice the distance to the boundary (O(n) per
+  /// sample; an extension has a few dozen samples).
+  std::vector<Width_sample> width_profile() const
+  {
+    std::vector<Width_sample> out;
+    for(std::size_t k = 0; k < paths_.size(); ++k) {
+      const Path& p = paths_[k];
+      double s = 0;
+      if(p.has_start_extension)
+        s = sample_segment(out, k, s, p.start_extension, point_of(p.pieces.front(), p.pieces.front().from), false);
+      for(const Piece& x : p.pieces) {
+        const double L = x.length();
+        const double dir = x.to >= x.from ? 1.0 : -1.0;
+        double t = 0;
+        while(true) {
+          const double at = x.from + dir * t;
+          const double r = x.halfedge.radius_at(at);
+          const auto q = x.halfedge.point_at(at);
+          if(t > 0 || out.empty() || out.back().path != k)   // a piece starts where the last one ends
+            out.push_back(Width_sample{s + t, q.first, q.second, 2 * r, k});
+          if(t >= L) break;
+          const double step = (std::max)(0.1 * 2 * r, L * 1e-4);
+          t = (std::min)(L, t + step);
+        }
+        s += L;
+      }
+      if(p.has_end_extension)
+        sample_segment(out, k, s, point_of(p.pieces.back(), p.pieces.back().to), p.end_extension, true);
+    }
+    return out;
+  }
+
+  /// \cond
+  explicit Medial_axis_centerline_2(const Medial_axis& ma) : ma_(ma) {}
+  std::vector<Path> paths_;
+  static Point point_of(const Piece& x, double s)
+  {
+    if(s <= 0) return Medial_axis::to_xy(x.halfedge.source().point());
+    if(s >= x.halfedge.length()) return Medial_axis::to_xy(x.halfedge.target().point());
+    return x.halfedge.point_at(s);
+  }
+  static double distance(const Point& a, const Point& b) { return std::hypot(a.first - b.first, a.second - b.second); }
+  // the distance from q to the boundary of the input polygon, O(n)
+  double distance_to_boundary(const Point& q) const
+  {
+    double best = std::numeric_limits<double>::infinity();
+    for(std::size_t r = 0; r < ma_.number_of_input_rings(); ++r) {
+      const std::size_t n = ma_.input_ring_size(r);
+      for(std::size_t i = 0; i < n; ++i) {
+        const Point a = Medial_axis::to_xy(ma_.point({int(r), int(i)}));
+        const Point b = Medial_axis::to_xy(ma_.point({int(r), int((i + 1) % n)}));
+        const double dx = b.first - a.first, dy = b.second - a.second, l2 = dx * dx + dy * dy;
+        double t = l2 > 0 ? ((q.first - a.first) * dx + (q.second - a.second) * dy) / l2 : 0;
+        t = (std::min)(1.0, (std::max)(0.0, t));
+        best = (std::min)(best, std::hypot(q.first - a.first - t * dx, q.second - a.second - t * dy));
+      }
+    }
+    return best;
+  }
+  /// \endcond
+
+private:
+  // samples of the straight segment a-b (an extension), from s on
+  double sample_segment(std::vector<Width_sample>& out, std::size_t k, double s, const Point& a, const Point& b,
+                        bool skip_first) const
+  {
+    const double L = distance(a, b);
+    double t = 0;
+    bool first = true;
+    while(true) {
+      const double f = L > 0 ? t / L : 1;
+      const Point q(a.first + (b.first - a.first) * f, a.second + (b.second - a.second) * f);
+      const double w = 2 * distance_to_boundary(q);
+      if(!(first && skip_first)) out.push_back(Width_sample{s + t, q.first, q.second, w, k});
+      first = false;
+      if(t >= L) break;
+      t = (std::min)(L, t + (std::max)(0.1 * w, L / 64));
+    }
+    return s + L;
+  }
+
+  Medial_axis ma_;
+};
+
+namespace Progressive_medial_axes {
+namespace internal {
+
+// The first point of the boundary of the input polygon of ma hit by the ray
+// from p in the unit direction d (p itself if none, which cannot happen
+// from inside the shape).
+template <class Medial_axis>
+std::pair<double, double> shoot_ray(const Medial_axis& ma, const std::pair<double, double>& p,
+                                    const std::pair<double, double>& d)
+{
+  double best = std::numeric_limits<double>::infinity();
+  for(std::size_t r = 0; r < ma.number_of_input_rings(); ++r) {
+    const std::size_t n = ma.input_ring_size(r);
+    for(std::size_t i = 0; i < n; ++i) {
+      const auto a = Medial_axis::to_xy(ma.point({int(r), int(i)}));
+      const auto b = Medial_axis::to_xy(ma.point({int(r), int((i + 1) % n)}));
+      const double ex = b.first - a.first, ey = b.second - a.second;
+      const double den = d.first * ey - d.second * ex;
+      if(den == 0) continue;
+      const double wx = a.first - p.first, wy = a.second - p.second;
+      const double t = (wx * ey - wy * ex) / den;   // along the ray
+      const double u = (wx * d.second - wy * d.first) / den;   // along the edge
+      if(t > 0 && u >= 0 && u <= 1 && t < best) best = t;
+    }
+  }
+  if(best == std::numeric_limits<double>::infinity()) return p;
+  return std::make_pair(p.first + best * d.first, p.second + best * d.second);
+}
+
+} // namespace internal
+} // namespace Progressive_medial_axes
+
+/*!
+\ingroup PkgProgressiveMedialAxis2Ref
+
+The centerline of a pruned medial axis (see `Medial_axis_centerline_2`),
+extended to the boundary with `extend`.  Linear in the size of the pruned
+axis (two shortest-path searches on it), plus O(n) per extended end.
+*/
+template <class K>
+Medial_axis_centerline_2<K> medial_axis_centerline_2(const Pruned_medial_axis_2<K>& pruned, bool extend = false)
+{
+  typedef Medial_axis_centerline_2<K> Centerline;
+  typedef typename Centerline::Piece Piece;
+  typedef typename Centerline::Path Path;
+  typedef typename Pruned_medial_axis_2<K>::Curve Curve;
+  Centerline out(pruned.medial_axis());
+  const std::vector<Curve>& curves = pruned.curves();
+  if(curves.empty()) return out;
+
+  // the graph: a node per kept vertex and per cut end
+  std::map<std::size_t, int> vertex_node;
+  int n_nodes = 0;
+  struct Link { int a, b; };
+  std::vector<Link> links;
+  auto node_of_vertex = [&](const typename Medial_axis_2<K>::Vertex_handle& v) {
+    auto it = vertex_node.find(v.id_number());
+    if(it != vertex_node.end()) return it->second;
+    vertex_node.emplace(v.id_number(), n_nodes);
+    return n_nodes++;
+  };
+  for(const Curve& c : curves) {
+    const int a = c.cut_at_begin() ? n_nodes++ : node_of_vertex(c.halfedge.source());
+    const int b = c.cut_at_end() ? n_nodes++ : node_of_vertex(c.halfedge.target());
+    links.push_back(Link{a, b});
+  }
+  std::vector<std::vector<int> > incident(n_nodes);
+  for(int i = 0; i < int(links.size()); ++i) {
+    incident[links[i].a].push_back(i);
+    incident[links[i].b].push_back(i);
+  }
+  auto other = [&](int link, int node) { return links[link].a == node ? links[link].b : links[link].a; };
+
+  // farthest node from a source, along the curves (Dijkstra)
+  auto farthest = [&](int source, std::vector<int>* via) {
+    std::vector<double> dist(n_nodes, std::numeric_limits<double>::infinity());
+    if(via) via->assign(n_nodes, -1);
+    typedef std::pair<double, int> Item;
+    std::priority_queue<Item, std::vector<Item>, std::greater<Item> > q;
+    dist[source] = 0;
+    q.push(Item(0, source));
+    while(!q.empty()) {
+      const Item it = q.top();
+      q.pop();
+      if(it.first > dist[it.second]) continue;
+      for(int l : incident[it.second]) {
+        const int o = other(l, it.second);
+        const double d = it.first + curves[l].length();
+        if(d < dist[o]) {
+          dist[o] = d;
+          if(via) (*via)[o] = l;
+          q.push(Item(d, o));
+        }
+      }
+    }
+    int best = source;
+    for(int v = 0; v < n_nodes; ++v)
+      if(incident[v].size() == 1 && dist[v] != std::numeric_limits<double>::infinity() &&
+         (incident[best].size() != 1 || dist[v] > dist[best]))
+        best = v;
+    return best;
+  };
+  int start = 0;
+  for(int v = 0; v < n_nodes; ++v)
+    if(incident[v].size() == 1) {
+      start = v;
+      break;
+    }
+  const int end_a = farthest(start, nullptr);
+  const int end_b = farthest(end_a, nullptr);
+  const bool a_is_end = incident[end_a].size() == 1, b_is_end = incident[end_b].size() == 1;
+
+  // peel the side branches: remove the ends other than end_a and end_b
+  std::vector<int> degree(n_nodes);
+  std::vector<char> removed_link(links.size(), 0), removed_node(n_nodes, 0);
+  std::deque<int> leaves;
+  for(int v = 0; v < n_nodes; ++v) {
+    degree[v] = int(incident[v].size());
+    if(degree[v] == 1 && v != end_a && v != end_b) leaves.push_back(v);
+  }
+  while(!leaves.empty()) {
+    const int v = leaves.front();
+    leaves.pop_front();
+    if(removed_node[v] || degree[v] != 1) continue;
+    removed_node[v] = 1;
+    for(int l : incident[v]) {
+      if(removed_link[l]) continue;
+      removed_link[l] = 1;
+      const int o = other(l, v);
+      if(--degree[o] == 1 && o != end_a && o != end_b) leaves.push_back(o);
+    }
+  }
+  // nodes of the component of end_a only
+  std::vector<char> reached(n_nodes, 0);
+  {
+    std::vector<int> stack(1, end_a);
+    reached[end_a] = 1;
+    while(!stack.empty()) {
+      const int v = stack.back();
+      stack.pop_back();
+      for(int l : incident[v])
+        if(!removed_link[l] && !reached[other(l, v)]) {
+          reached[other(l, v)] = 1;
+          stack.push_back(other(l, v));
+        }
+    }
+  }
+
+  // maximal chains between nodes of degree other than 2
+  std::vector<char> used(links.size(), 0);
+  auto piece_of = [&](int l, int from_node) {
+    const Curve& c = curves[l];
+    Piece p;
+    p.halfedge = c.halfedge;
+    if(links[l].a == from_node) {
+      p.from = c.begin;
+      p.to = c.end;
+    } else {
+      p.from = c.end;
+      p.to = c.begin;
+    }
+    return p;
+  };
+  auto walk = [&](int v, int l) {
+    Path path;
+    while(true) {
+      used[l] = 1;
+      path.pieces.push_back(piece_of(l, v));
+      v = other(l, v);
+      if(degree[v] != 2) break;
+      int next = -1;
+      for(int m : incident[v])
+        if(!removed_link[m] && !used[m]) next = m;
+      if(next < 0) {
+        path.closed = true;
+        break;
+      }
+      l = next;
+    }
+    return path;
+  };
+  // start at end_a so that a single path runs from one end to the other
+  std::vector<int> starts;
+  if(degree[end_a] != 2) starts.push_back(end_a);
+  for(int v = 0; v < n_nodes; ++v)
+    if(reached[v] && degree[v] != 2 && v != end_a) starts.push_back(v);
+  for(int v : starts)
+    for(int l : incident[v])
+      if(!removed_link[l] && !used[l]) out.paths_.push_back(walk(v, l));
+  for(int v = 0; v < n_nodes; ++v)   // cycles without a junction
+    if(reached[v])
+      for(int l : incident[v])
+        if(!removed_link[l] && !used[l]) out.paths_.push_back(walk(v, l));
+
+  if(extend) {
+    const auto& ma = pruned.medial_axis();
+    for(Path& p : out.paths_) {
+      if(p.closed) continue;
+      // the node where the path starts and ends: an end of the centerline?
+      const Piece& f = p.pieces.front();
+      const Piece& b = p.pieces.back();
+      auto is_end_at = [&](const Piece& x, double s) {
+        for(int v : {end_a, end_b}) {
+          if(!(v == end_a ? a_is_end : b_is_end)) continue;
+          const int l = incident[v][0];
+          const Curve& c = curves[l];
+          if(c.halfedge == x.halfedge && (links[l].a == v ? c.begin : c.end) == s) return true;
+        }
+        return false;
+      };
+      if(is_end_at(f, f.from)) {
+        auto t = f.halfedge.tangent_at(f.from);
+        if(f.to > f.from) t = std::make_pair(-t.first, -t.second);
+        p.start_extension =
+          Progressive_medial_axes::internal::shoot_ray(ma, Centerline::point_of(f, f.from), t);
+        p.has_start_extension = true;
+      }
+      if(is_end_at(b, b.to)) {
+        auto t = b.halfedge.tangent_at(b.to);
+        if(b.to < b.from) t = std::make_pair(-t.first, -t.second);
+        p.end_extension = Progressive_medial_axes::internal::shoot_ray(ma, Centerline::point_of(b, b.to), t);
+        p.has_end_extension = true;
+      }
+    }
+  }
+  return out;
+}
+
+} // namespace CGAL
+
+#endif // CGAL_PROGRESSIVE_MEDIAL_AXIS_2_MEDIAL_AXIS_CENTERLINE_2_H

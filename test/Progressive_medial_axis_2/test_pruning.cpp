@@ -1,0 +1,326 @@
+// What users do with a medial axis (issue 14): the extended grassfire
+// significance, pruning, centerlines and their width profile, the maximum
+// inscribed circle and the exact Bezier form of parabolic arcs.
+//
+//   test_pruning
+//
+// Shapes with K arms keep exactly K ends, with and without boundary noise;
+// the centerline of a noisy meandering band follows its known centre line;
+// the invariants of the grassfire transform hold on random polygons with
+// holes.  (The maximum inscribed circle is compared with the oracle's
+// branch points in test_medial_axis_oracle, on every shape it runs.)
+
+#include <CGAL/Progressive_medial_axis_2.h>
+#include <CGAL/Progressive_medial_axis_2/Medial_axis_significance_2.h>
+#include <CGAL/Progressive_medial_axis_2/Medial_axis_centerline_2.h>
+#include <CGAL/Progressive_medial_axis_2/maximum_inscribed_circle_2.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+
+#include <pma_test/check.h>
+#include <pma_test/random_polygons.h>
+
+#include <cmath>
+#include <cstdint>
+#include <iostream>
+#include <map>
+#include <random>
+#include <string>
+#include <vector>
+
+namespace {
+
+typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
+typedef K::Point_2 Point;
+typedef std::vector<std::vector<Point> > Rings;
+typedef CGAL::Medial_axis_2<K> MA;
+typedef CGAL::Pruned_medial_axis_2<K> Pruned;
+const double pi = 3.14159265358979323846;
+
+// The ends (nodes of degree 1), components and independent cycles of a
+// pruned axis, as a graph whose nodes are kept vertices and cut ends.
+struct Graph_counts {
+  int ends = 0, components = 0, cycles = 0;
+};
+Graph_counts count_graph(const Pruned& p)
+{
+  std::map<std::size_t, int> vertex_node;
+  std::vector<int> parent, degree;
+  auto add = [&]() {
+    parent.push_back(int(parent.size()));
+    degree.push_back(0);
+    return int(parent.size()) - 1;
+  };
+  auto node = [&](const MA::Vertex_handle& v) {
+    auto it = vertex_node.find(v.id_number());
+    if(it != vertex_node.end()) return it->second;
+    const int n = add();
+    vertex_node[v.id_number()] = n;
+    return n;
+  };
+  std::function<int(int)> find = [&](int x) { return parent[x] == x ? x : parent[x] = find(parent[x]); };
+  int edges = 0;
+  for(const auto& c : p.curves()) {
+    const int a = c.cut_at_begin() ? add() : node(c.halfedge.source());
+    const int b = c.cut_at_end() ? add() : node(c.halfedge.target());
+    ++degree[a];
+    ++degree[b];
+    parent[find(a)] = find(b);
+    ++edges;
+  }
+  Graph_counts g;
+  for(int v = 0; v < int(parent.size()); ++v) {
+    if(find(v) == v) ++g.components;
+    if(degree[v] == 1) ++g.ends;
+  }
+  g.cycles = edges - int(parent.size()) + g.components;
+  return g;
+}
+
+// A star of K smooth arms: r(t) = 1 + 2 ((1 + cos(K t)) / 2)^6, sampled at n
+// points, each moved radially by a uniform noise in [-noise, noise].
+Rings star(int arms, int n, double noise, std::uint64_t seed)
+{
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> u(-noise, noise);
+  Rings r(1);
+  for(int i = 0; i < n; ++i) {
+    const double t = 2 * pi * i / n;
+    const double rho = 1 + 2 * std::pow(0.5 + 0.5 * std::cos(arms * t), 6) + (noise > 0 ? u(rng) : 0);
+    r[0].push_back(Point(rho * std::cos(t), rho * std::sin(t)));
+  }
+  return r;
+}
+
+// The centre line of the meandering band: y = A sin(2 pi x / P).
+const double band_amplitude = 1, band_period = 8, band_length = 24, band_width = 1;
+std::pair<double, double> band_centre(double x)
+{
+  return {x, band_amplitude * std::sin(2 * pi * x / band_period)};
+}
+std::pair<double, double> band_normal(double x)
+{
+  const double dy = band_amplitude * 2 * pi / band_period * std::cos(2 * pi * x / band_period);
+  const double n = std::hypot(1.0, dy);
+  return {-dy / n, 1 / n};
+}
+// The band of width 1 around the centre line for 0 <= x <= 24, its sides
+// sampled every `step` and moved along the normal by noise in [-noise, noise].
+Rings band(double step, double noise, std::uint64_t seed)
+{
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> u(-noise, noise);
+  const int n = int(band_length / step);
+  std::vector<Point> lower, upper;
+  for(int i = 0; i <= n; ++i) {
+    const double x = band_length * i / n;
+    const auto c = band_centre(x);
+    const auto m = band_normal(x);
+    const double e1 = (i == 0 || i == n || noise == 0) ? 0 : u(rng), e2 = (i == 0 || i == n || noise == 0) ? 0 : u(rng);
+    lower.push_back(Point(c.first - (0.5 * band_width + e1) * m.first, c.second - (0.5 * band_width + e1) * m.second));
+    upper.push_back(Point(c.first + (0.5 * band_width + e2) * m.first, c.second + (0.5 * band_width + e2) * m.second));
+  }
+  Rings r(1);
+  for(const Point& p : lower) r[0].push_back(p);
+  for(auto it = upper.rbegin(); it != upper.rend(); ++it) r[0].push_back(*it);
+  return r;
+}
+double distance_to_band_centre(double x, double y)
+{
+  // the centre line sampled finely (its curvature radius is 1.6 or more)
+  double best = 1e300;
+  for(int i = -100; i <= 24100; ++i) {
+    const auto c = band_centre(band_length * i / 24000.0);
+    best = std::min(best, std::hypot(x - c.first, y - c.second));
+  }
+  return best;
+}
+
+void test_arms()
+{
+  for(int arms = 3; arms <= 8; ++arms)
+    for(int noisy = 0; noisy < 2; ++noisy) {
+      const Rings r = star(arms, 400 * arms / 3 + 100, noisy ? 0.01 : 0, 1000u + std::uint64_t(arms));
+      const MA ma = CGAL::medial_axis_2(r);
+      const CGAL::Medial_axis_significance_2<K> sig(ma);
+      const Pruned p = CGAL::prune_medial_axis_2(sig, 0.2);
+      const Graph_counts g = count_graph(p);
+      const std::string what = std::to_string(arms) + " arms" + (noisy ? ", noisy" : "");
+      CHECK(g.ends == arms, what << ": " << g.ends << " ends after pruning et=0.2 (axis: " << ma.number_of_edges()
+                                 << " curves)");
+      CHECK(g.components == 1 && g.cycles == 0, what << ": " << g.components << " components, " << g.cycles << " cycles");
+      // the ratio threshold alone is free of scale: the same ends
+      const Graph_counts q = count_graph(CGAL::prune_medial_axis_2(sig, 0, 0.5));
+      CHECK(q.ends == arms, what << ": " << q.ends << " ends after pruning ratio=0.5");
+    }
+}
+
+void test_band()
+{
+  for(int noisy = 0; noisy < 2; ++noisy) {
+    const std::string what = noisy ? "noisy band" : "band";
+    const Rings r = band(0.05, noisy ? 0.01 : 0, 7);
+    const MA ma = CGAL::medial_axis_2(r);
+    const CGAL::Medial_axis_significance_2<K> sig(ma);
+    const double R = CGAL::to_double(CGAL::maximum_inscribed_circle_2(ma).radius);
+    CHECK(std::fabs(R - 0.5 * band_width) < 0.02, what << ": maximum inscribed radius " << R);
+    const Pruned p = CGAL::prune_medial_axis_2(sig, R);
+    for(int extend = 0; extend < 2; ++extend) {
+      const auto c = CGAL::medial_axis_centerline_2(p, extend != 0);
+      CHECK(c.paths().size() == 1 && !c.paths()[0].closed, what << ": " << c.paths().size() << " centerline paths");
+      if(c.paths().size() != 1) continue;
+      const auto lines = c.polylines(1e-4);
+      const auto& line = lines[0];
+      double worst = 0;
+      for(const auto& q : line) worst = std::max(worst, distance_to_band_centre(q.first, q.second));
+      CHECK(worst <= 0.1 * band_width, what << ": the centerline is " << worst << " from the centre line");
+      const double xs = std::min(line.front().first, line.back().first);
+      const double xe = std::max(line.front().first, line.back().first);
+      if(extend) {
+        CHECK(xs < 1e-6 && xe > band_length - 1e-6,
+              what << ": the extended centerline runs from x=" << xs << " to x=" << xe);
+      } else {
+        CHECK(xs > 0.3 && xs < 2 && xe < band_length - 0.3 && xe > band_length - 2,
+              what << ": the centerline runs from x=" << xs << " to x=" << xe);
+      }
+      // the width profile, away from the ends
+      const auto profile = c.width_profile();
+      CHECK(profile.size() > 10 * band_length, what << ": " << profile.size() << " width samples");
+      double worst_width = 0, last_s = -1;
+      bool increasing = true;
+      for(const auto& w : profile) {
+        increasing = increasing && w.s > last_s;
+        last_s = w.s;
+        if(w.x < 2 || w.x > band_length - 2) continue;
+        worst_width = std::max(worst_width, std::fabs(w.width - band_width) / band_width);
+      }
+      CHECK(increasing, what << ": the arc lengths of the width profile do not increase");
+      CHECK(worst_width <= 0.05, what << ": the width profile is off by " << 100 * worst_width << "%");
+      // samples at least every tenth of the width
+      for(std::size_t i = 1; i < profile.size(); ++i)
+        if(profile[i].x > 2 && profile[i].x < band_length - 2)
+          CHECK(profile[i].s - profile[i - 1].s <= 0.1 * profile[i - 1].width + 1e-9,
+                what << ": width samples " << profile[i].s - profile[i - 1].s << " apart");
+    }
+  }
+}
+
+// The invariants of the grassfire transform, and pruning keeps the topology,
+// on random polygons with holes.
+void test_invariants()
+{
+  for(int i = 0; i < 60; ++i) {
+    const std::uint64_t seed = 5000u + std::uint64_t(i);
+    const Rings r = pma_test::random_polygon_with_holes(seed, 20 + i * 7, i % 4);
+    const MA ma = CGAL::medial_axis_2(r);
+    const CGAL::Medial_axis_significance_2<K> sig(ma);
+    const std::string what = "random polygon " + std::to_string(seed);
+    const int holes = int(r.size()) - 1;
+    for(const auto& v : ma.vertices()) {
+      const double t = sig.extended_distance(v);
+      CHECK(sig.erosion_thickness(v) >= 0, what << ": negative erosion thickness");
+      if(v.kind() == MA::TERMINAL_POINT) CHECK(t == 0, what << ": an end burns at " << t);
+      if(holes == 0) CHECK(std::isfinite(t), what << ": a vertex never burns without holes");
+    }
+    // ET never decreases in the direction the fire runs
+    for(const auto& e : ma.edges()) {
+      const auto b = sig.burning(e);
+      const double L = e.length();
+      if(b == CGAL::Medial_axis_significance_2<K>::FROM_SOURCE || b == CGAL::Medial_axis_significance_2<K>::FROM_TARGET) {
+        const double s0 = b == CGAL::Medial_axis_significance_2<K>::FROM_SOURCE ? 0 : L;
+        double last = sig.erosion_thickness(e, s0);
+        for(int k = 1; k <= 8; ++k) {
+          const double s = b == CGAL::Medial_axis_significance_2<K>::FROM_SOURCE ? L * k / 8 : L * (8 - k) / 8;
+          const double et = sig.erosion_thickness(e, s);
+          CHECK(et >= last - 1e-9 * (1 + std::fabs(last)), what << ": ET decreases along the fire, " << last << " then " << et);
+          last = et;
+        }
+      }
+      if(holes == 0) CHECK(b != CGAL::Medial_axis_significance_2<K>::NOT_BURNING, what << ": a curve never burns");
+    }
+    const double R = CGAL::to_double(CGAL::maximum_inscribed_circle_2(ma).radius);
+    for(double f : {0.05, 0.3, 1.0}) {
+      const Pruned p = CGAL::prune_medial_axis_2(sig, f * R, f == 1.0 ? 0.2 : 0);
+      const Graph_counts g = count_graph(p);
+      const bool point = p.curves().empty() && p.isolated_points().size() == 1;
+      CHECK(point || (g.components == 1 && g.cycles == holes),
+            what << ", et=" << f << "R: " << g.components << " components, " << g.cycles << " cycles, " << holes
+                 << " holes");
+      CHECK(holes == 0 || !p.curves().empty(), what << ": cycles pruned away");
+      for(const auto& c : p.curves())
+        CHECK(c.begin >= 0 && c.end <= c.halfedge.length() && c.begin <= c.end, what << ": kept part out of its curve");
+    }
+  }
+}
+
+// A parabolic arc is exactly its quadratic Bezier curve: every point of the
+// Bezier curve is as far from the focus as from the directrix.
+void test_bezier()
+{
+  const Rings r = pma_test::random_polygon_with_holes(77, 80, 2);
+  const MA ma = CGAL::medial_axis_2(r);
+  int arcs = 0;
+  for(const auto& e : ma.edges()) {
+    if(e.curve_kind() != MA::PARABOLIC_ARC) continue;
+    ++arcs;
+    const auto f = e.first_generator().is_point() ? e.first_generator() : e.second_generator();
+    const auto s = e.first_generator().is_point() ? e.second_generator() : e.first_generator();
+    const auto p = MA::to_xy(f.source()), a = MA::to_xy(s.source()), b = MA::to_xy(s.target());
+    const double L = e.length();
+    for(double lo : {0.0, 0.25 * L})
+      for(double hi : {L, 0.75 * L}) {
+        const auto z = e.quadratic_bezier(lo, hi);
+        for(double t = 0; t <= 1; t += 0.125) {
+          const double x = (1 - t) * (1 - t) * z[0].first + 2 * t * (1 - t) * z[1].first + t * t * z[2].first;
+          const double y = (1 - t) * (1 - t) * z[0].second + 2 * t * (1 - t) * z[1].second + t * t * z[2].second;
+          const double to_focus = std::hypot(x - p.first, y - p.second);
+          const double to_line = std::fabs((b.first - a.first) * (y - a.second) - (b.second - a.second) * (x - a.first)) /
+                                 std::hypot(b.first - a.first, b.second - a.second);
+          CHECK(std::fabs(to_focus - to_line) <= 1e-9 * (1 + to_focus), "Bezier point off the parabola by "
+                                                                          << to_focus - to_line);
+        }
+        // its ends are the ends of the part
+        const auto q0 = e.point_at(lo), q1 = e.point_at(hi);
+        CHECK(std::hypot(q0.first - z[0].first, q0.second - z[0].second) <= 1e-9 * (1 + L) &&
+                std::hypot(q1.first - z[2].first, q1.second - z[2].second) <= 1e-9 * (1 + L),
+              "Bezier ends are not the ends of the part");
+      }
+    // arc length: point_at(s) is at arc length s
+    const auto poly = e.polyline(1e-9 * L, 0, 0.5 * L);
+    double len = 0;
+    for(std::size_t i = 1; i < poly.size(); ++i)
+      len += std::hypot(poly[i].first - poly[i - 1].first, poly[i].second - poly[i - 1].second);
+    CHECK(std::fabs(len - 0.5 * L) <= 1e-6 * L, "half the arc has length " << len << " of " << L);
+  }
+  CHECK(arcs > 10, "only " << arcs << " parabolic arcs");
+}
+
+// The maximum inscribed circle of simple shapes, with ties.
+void test_circle()
+{
+  // a 10 x 2 rectangle: the largest disks slide along y = 1 from x = 1 to 9;
+  // the tie is broken by the smallest x
+  const Rings rect = {{Point(0, 0), Point(10, 0), Point(10, 2), Point(0, 2)}};
+  const auto c = CGAL::maximum_inscribed_circle_2(CGAL::medial_axis_2(rect));
+  CHECK(c.center == Point(1, 1) && c.radius == 1, "rectangle: circle " << c.center << " " << c.radius);
+  // a square with a square hole: the largest disks sit in the four corners,
+  // touching two outer edges and a corner of the hole, centre (c, c) with
+  // c = sqrt(2) (2 - c); the tie is broken by the smallest (x, y)
+  const Rings frame = {{Point(0, 0), Point(6, 0), Point(6, 6), Point(0, 6)},
+                       {Point(2, 2), Point(2, 4), Point(4, 4), Point(4, 2)}};
+  const auto f = CGAL::maximum_inscribed_circle_2(CGAL::medial_axis_2(frame));
+  const double c0 = 2 * std::sqrt(2.0) / (1 + std::sqrt(2.0));
+  CHECK(std::fabs(f.radius - c0) < 1e-15 && std::fabs(f.center.x() - c0) < 1e-15 && std::fabs(f.center.y() - c0) < 1e-15,
+        "frame: circle " << f.center << " " << f.radius);
+}
+
+} // namespace
+
+int main()
+{
+  test_circle();
+  test_bezier();
+  test_arms();
+  test_band();
+  test_invariants();
+  return pma_test::report("test_pruning");
+}
