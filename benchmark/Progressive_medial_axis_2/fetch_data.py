@@ -122,7 +122,7 @@ def main():
     ap.add_argument("--quick", action="store_true", help="only the shapes of the quick set")
     ap.add_argument("--build", default=os.path.join(ROOT, "build"), help="CMake build directory")
     args = ap.parse_args()
-    tool = os.path.join(args.build, "examples", "Progressive_medial_axis_2", "progressive_medial_axis")
+    tool = os.path.join(args.build, "tool", "Progressive_medial_axis_2", "progressive_medial_axis")
     synth = os.path.join(args.build, "benchmark", "Progressive_medial_axis_2", "make_synthetic")
     for exe in (tool, synth):
         if not os.access(exe, os.X_OK):

@@ -15,6 +15,8 @@
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
+#include <functional>
+#include <map>
 #include <iostream>
 #include <sstream>
 #include <string>
@@ -181,6 +183,109 @@ void outputs(const std::string& data)
   CHECK(g.status == 0 && g.out == w.out && !g.out.empty(), "GeoJSON input");
 }
 
+// The components of the curves of a WKT MULTILINESTRING, joined where their
+// end points are written identically.
+int wkt_components(const std::string& wkt, int* lines)
+{
+  std::vector<std::pair<std::string, std::string> > ends;
+  std::size_t pos = wkt.find('(');
+  while((pos = wkt.find('(', pos + 1)) != std::string::npos) {
+    const std::size_t close = wkt.find(')', pos);
+    const std::string body = wkt.substr(pos + 1, close - pos - 1);
+    const std::size_t comma = body.find(','), last = body.rfind(',');
+    ends.emplace_back(body.substr(0, comma), body.substr(last + 1 + (body[last + 1] == ' ' ? 1 : 0)));
+    pos = close;
+  }
+  std::map<std::string, std::string> parent;
+  std::function<std::string(const std::string&)> find = [&](const std::string& x) -> std::string {
+    if(parent[x] == x) return x;
+    return parent[x] = find(parent[x]);
+  };
+  for(const auto& e : ends) {
+    if(!parent.count(e.first)) parent[e.first] = e.first;
+    if(!parent.count(e.second)) parent[e.second] = e.second;
+    parent[find(e.first)] = find(e.second);
+  }
+  int c = 0;
+  for(const auto& kv : parent)
+    if(find(kv.first) == kv.first) ++c;
+  *lines = int(ends.size());
+  return c;
+}
+
+// Pruning, centerline, width profile, inscribed circle (issue 14).
+void analysis_outputs(const std::string& data)
+{
+  {
+    std::ofstream w(tmp + "/rect.wkt");
+    w << "POLYGON ((0 0, 10 0, 10 2, 0 2, 0 0))";
+  }
+  const std::string rect = tmp + "/rect.wkt";
+  // a 10 x 2 rectangle: ET = EDF - R reaches 0.5 on the middle line at
+  // 0.5 + 1 - sqrt(2) from each branch point; only that curve stays, cut
+  Result p = run(tool + " --pairs --branches --prune et=0.5 " + rect);
+  CHECK(p.status == 0, "--prune: " << p.err);
+  std::istringstream pl(p.out);
+  std::string head, a, b;
+  double len = 0;
+  pl >> head >> a >> b >> len;
+  CHECK(head == "pair" && a == "e0.0" && b == "e0.2" && count_lines(p.out) == 1, "--prune et=0.5: " << p.out);
+  CHECK(std::fabs(len - (8 - 2 * (1.5 - std::sqrt(2.0)))) < 1e-9, "--prune et=0.5: kept length " << len);
+  Result c = run(tool + " --inscribed-circle " + rect);
+  CHECK(c.status == 0 && c.out == "circle 1 1 1\n", "--inscribed-circle: " << c.out << c.err);
+  Result l = run(tool + " --stats --centerline " + tmp + "/cl.wkt --extend --width " + tmp + "/w.csv " + rect);
+  CHECK(l.status == 0, "--centerline: " << l.err);
+  const std::string cl = slurp(tmp + "/cl.wkt");
+  CHECK(cl == "LINESTRING (10 1, 8.4142135623730958 1, 1.5857864376269046 1, 0 1)\n" ||
+          cl == "LINESTRING (0 1, 1.5857864376269046 1, 8.4142135623730958 1, 10 1)\n",
+        "--centerline --extend: " << cl);
+  std::istringstream wl(slurp(tmp + "/w.csv"));
+  std::string row;
+  std::getline(wl, row);
+  CHECK(row == "s,x,y,width", "--width header: " << row);
+  int rows = 0;
+  double last = -1;
+  while(std::getline(wl, row)) {
+    double s, x, y, w;
+    char c1, c2, c3;
+    std::istringstream r(row);
+    r >> s >> c1 >> x >> c2 >> y >> c3 >> w;
+    CHECK(r && y == 1 && s > last && w >= 0 && w <= 2 + 1e-12, "--width row: " << row);
+    if(x > 1.6 && x < 8.4) CHECK(std::fabs(w - 2) < 1e-12, "--width: width " << w << " at x=" << x);
+    last = s;
+    ++rows;
+  }
+  CHECK(rows >= 40, "--width: " << rows << " rows");
+  const std::size_t at = l.out.find("\ncenterline_length ");
+  CHECK(at != std::string::npos && std::fabs(std::atof(l.out.c_str() + at + 19) - 10) < 1e-12,
+        "--stats: centerline_length of the extended centerline");
+  CHECK(l.out.find("\ntime_prune ") != std::string::npos, "--stats lacks time_prune");
+  CHECK(l.out.find("\npruned_curves ") == std::string::npos, "--stats: pruned_curves without --prune");
+  Result s = run(tool + " --stats --prune ratio=0.3 " + rect);
+  CHECK(s.out.find("\npruned_curves ") != std::string::npos && s.out.find("\ntime_prune ") != std::string::npos,
+        "--stats with --prune");
+
+  // a pruned axis with parabolas: SVG draws them as quadratic Beziers, and
+  // curves meet at identical coordinates in the WKT output
+  const std::string spiral = data + "/syn_spiral20.wkt";
+  Result q = run(tool + " --prune et=0.05 --svg " + tmp + "/p.svg --wkt-out " + tmp + "/p.wkt --geojson " + tmp +
+                 "/p.geojson " + spiral);
+  CHECK(q.status == 0, "--prune on the spiral: " << q.err);
+  const std::string svg = slurp(tmp + "/p.svg");
+  CHECK(svg.find("Q") != std::string::npos, "SVG without quadratic Bezier curves");
+  int lines = 0;
+  const int components = wkt_components(slurp(tmp + "/p.wkt"), &lines);
+  CHECK(lines > 10 && components == 1, "pruned WKT: " << lines << " curves in " << components << " components");
+  CHECK(slurp(tmp + "/p.geojson").find("\"et\":[") != std::string::npos, "pruned GeoJSON without et");
+
+  for(const std::string& args : {std::string("--prune foo"), std::string("--prune et=-1"),
+                                 std::string("--prune ratio=1.5"), std::string("--prune et=1,size=2"),
+                                 std::string("--tolerance 0")}) {
+    Result r = run(tool + " " + args + " " + rect);
+    CHECK(r.status == 2 && count_lines(r.err) == 2, "'" << args << "': exit status " << r.status << ", " << r.err);
+  }
+}
+
 } // namespace
 
 int main(int argc, char** argv)
@@ -202,6 +307,7 @@ int main(int argc, char** argv)
   pairs_against_oracle(data + "/syn_maze20.wkt", {-1, 3, 120, 400});
   pairs_against_oracle(data + "/syn_spiral20.wkt", {-1, 50});
   outputs(data);
+  analysis_outputs(data);
 
   std::system((std::string("rm -rf ") + tmp).c_str());
   return pma_test::report("test_tool");
