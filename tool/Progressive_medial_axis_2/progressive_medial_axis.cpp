@@ -335,6 +335,7 @@ int run(const Options& o)
   std::unique_ptr<CGAL::Medial_axis_centerline_2<Kernel> > center;
   if(o.prune || centerline) {
     significance.reset(new CGAL::Medial_axis_significance_2<Kernel>(ma));
+
     double et = o.prune_et, ratio = o.prune_ratio;
     if(!o.prune) {   // the default pruning of a centerline: et = the largest radius
       et = CGAL::to_double(CGAL::maximum_inscribed_circle_2(ma).radius);

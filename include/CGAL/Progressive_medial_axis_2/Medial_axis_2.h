@@ -441,6 +441,13 @@ public:
   Range<Face_iterator> faces() const { return range<Face_handle>(d_ ? int(hds().face_capacity()) : 0, &keep_face); }
   Range<Face_iterator> generators() const { return faces(); }
 
+  /// \cond
+  // Bounds of the id numbers of vertices and half-edges (for arrays indexed
+  // by them).
+  std::size_t vertex_id_bound() const { return d_ ? hds().vertex_capacity() : 0; }
+  std::size_t halfedge_id_bound() const { return d_ ? hds().halfedge_capacity() : 0; }
+  /// \endcond
+
   std::size_t number_of_vertices() const { return count(vertices()); }
   std::size_t number_of_edges() const { return count(edges()); }
   std::size_t number_of_faces() const { return count(faces()); }

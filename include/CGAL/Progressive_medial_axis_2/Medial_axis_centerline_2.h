@@ -261,19 +261,19 @@ Medial_axis_centerline_2<K> medial_axis_centerline_2(const Pruned_medial_axis_2<
   if(curves.empty()) return out;
 
   // the graph: a node per kept vertex and per cut end
-  std::map<std::size_t, int> vertex_node;
+  std::vector<int> vertex_node(pruned.medial_axis().vertex_id_bound(), -1);
   int n_nodes = 0;
   struct Link { int a, b; };
   std::vector<Link> links;
+  links.reserve(curves.size());
   auto node_of_vertex = [&](const typename Medial_axis_2<K>::Vertex_handle& v) {
-    auto it = vertex_node.find(v.id_number());
-    if(it != vertex_node.end()) return it->second;
-    vertex_node.emplace(v.id_number(), n_nodes);
-    return n_nodes++;
+    int& n = vertex_node[v.id_number()];
+    if(n < 0) n = n_nodes++;
+    return n;
   };
   for(const Curve& c : curves) {
-    const int a = c.cut_at_begin() ? n_nodes++ : node_of_vertex(c.halfedge.source());
-    const int b = c.cut_at_end() ? n_nodes++ : node_of_vertex(c.halfedge.target());
+    const int a = c.cut_at_begin() ? n_nodes++ : node_of_vertex(c.source);
+    const int b = c.cut_at_end() ? n_nodes++ : node_of_vertex(c.target);
     links.push_back(Link{a, b});
   }
   std::vector<std::vector<int> > incident(n_nodes);

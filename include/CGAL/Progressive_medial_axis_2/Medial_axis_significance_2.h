@@ -22,7 +22,7 @@
 #include <functional>
 #include <limits>
 #include <queue>
-#include <unordered_map>
+#include <stdexcept>
 #include <utility>
 #include <vector>
 
@@ -144,11 +144,11 @@ public:
     Vertex_handle vertex;
     double radius = 0;
     double time = std::numeric_limits<double>::infinity();
-    std::vector<int> arcs;   // incident curves
-    int arrived = 0;         // curves burnt up to this vertex
-    int out = -1;            // the curve the fire goes on into
+    int first = 0, degree = 0;   // incident curves: incidence_[first, first + degree)
+    int arrived = 0;             // curves burnt up to this vertex
+    int out = -1;                // the curve the fire goes on into
     bool ignited = false;
-    std::size_t rank = 0;    // the order in which the vertices catch fire
+    std::size_t rank = 0;        // the order in which the vertices catch fire
   };
   struct Arc {
     Halfedge_handle halfedge;  // oriented from node u to node w
@@ -161,8 +161,16 @@ public:
   };
   const std::vector<Node>& nodes() const { return vertices_; }
   const std::vector<Arc>& arcs() const { return arcs_; }
-  int vertex_index(const Vertex_handle& v) const { return vertex_map_.at(v.id_number()); }
-  int edge_index(const Halfedge_handle& h) const { return edge_map_.at(edge_key(h)); }
+  // the curves at node v
+  const int* arcs_begin(int v) const { return incidence_.data() + vertices_[v].first; }
+  const int* arcs_end(int v) const { return incidence_.data() + vertices_[v].first + vertices_[v].degree; }
+  int vertex_index(const Vertex_handle& v) const { return checked(vertex_map_.at(v.id_number())); }
+  int edge_index(const Halfedge_handle& h) const { return checked(edge_map_.at(edge_key(h))); }
+  static int checked(int i)
+  {
+    if(i < 0) throw std::invalid_argument("Medial_axis_significance_2: not a vertex or a medial curve of the axis");
+    return i;
+  }
   bool same_direction(const Halfedge_handle& h) const { return arcs_[edge_index(h)].halfedge == h; }
   static double time_along(const Arc& a, double from_u)
   {
@@ -176,25 +184,47 @@ private:
     return (std::min)(h.id_number(), h.opposite().id_number());
   }
 
+  // Arrays indexed by id numbers rather than hash maps: the ids are dense.
   void build()
   {
-    for(const Vertex_handle& v : ma_.vertices()) {
-      vertex_map_.emplace(v.id_number(), int(vertices_.size()));
-      Node n;
-      n.vertex = v;
-      n.radius = CGAL::to_double(v.radius());
-      vertices_.push_back(n);
-    }
+    vertex_map_.assign(ma_.vertex_id_bound(), -1);
+    edge_map_.assign(ma_.halfedge_id_bound(), -1);
+    // the vertices of the axis are the ends of its curves: one pass over the
+    // curves finds them
+    auto node = [&](const Vertex_handle& v) {
+      int& i = vertex_map_[v.id_number()];
+      if(i < 0) {
+        i = int(vertices_.size());
+        Node n;
+        n.vertex = v;
+        n.radius = CGAL::to_double(v.radius());
+        vertices_.push_back(n);
+      }
+      return i;
+    };
     for(const Halfedge_handle& h : ma_.edges()) {
       Arc a;
       a.halfedge = h;
-      a.u = vertex_map_.at(h.source().id_number());
-      a.w = vertex_map_.at(h.target().id_number());
+      a.u = node(h.source());
+      a.w = node(h.target());
       a.length = h.length();
-      edge_map_.emplace(edge_key(h), int(arcs_.size()));
-      vertices_[a.u].arcs.push_back(int(arcs_.size()));
-      vertices_[a.w].arcs.push_back(int(arcs_.size()));
+      edge_map_[edge_key(h)] = int(arcs_.size());
+      ++vertices_[a.u].degree;
+      ++vertices_[a.w].degree;
       arcs_.push_back(a);
+    }
+    int first = 0;
+    for(Node& n : vertices_) {
+      n.first = first;
+      first += n.degree;
+      n.degree = 0;
+    }
+    incidence_.resize(std::size_t(first));
+    for(int i = 0; i < int(arcs_.size()); ++i) {
+      Node& u = vertices_[arcs_[i].u];
+      incidence_[std::size_t(u.first + u.degree++)] = i;
+      Node& w = vertices_[arcs_[i].w];
+      incidence_[std::size_t(w.first + w.degree++)] = i;
     }
   }
 
@@ -203,8 +233,14 @@ private:
 
   void burn()
   {
-    typedef std::pair<double, std::pair<int, int> > Event;   // time, (arc, end it arrives at)
-    std::priority_queue<Event, std::vector<Event>, std::greater<Event> > queue;
+    struct Event {
+      double time;
+      int arc, end;   // the front arrives at that end of that curve
+      bool operator>(const Event& o) const { return time > o.time; }
+    };
+    std::vector<Event> heap;
+    heap.reserve(arcs_.size());
+    std::priority_queue<Event, std::vector<Event>, std::greater<Event> > queue(std::greater<Event>(), std::move(heap));
     std::size_t rank = 0;
     auto ignite = [&](int v, double t) {
       Node& n = vertices_[v];
@@ -212,39 +248,39 @@ private:
       n.rank = rank++;
       n.time = t;
       last_time_ = (std::max)(last_time_, t);
-      for(int ai : n.arcs) {
-        Arc& a = arcs_[ai];
+      for(const int* ai = arcs_begin(v); ai != arcs_end(v); ++ai) {
+        Arc& a = arcs_[*ai];
         const int end = end_of(a, v);
         if(a.arrived[end]) continue;
         // the remaining curve: the front enters it here
-        n.out = ai;
+        n.out = *ai;
         a.start[end] = t;
-        if(a.start[1 - end] == infinity()) queue.push(Event(t + a.length, std::make_pair(ai, 1 - end)));
+        if(a.start[1 - end] == infinity()) queue.push(Event{t + a.length, *ai, 1 - end});
         else last_time_ = (std::max)(last_time_, 0.5 * (a.start[0] + a.start[1] + a.length));
         break;
       }
     };
     for(int v = 0; v < int(vertices_.size()); ++v)
-      if(vertices_[v].arcs.size() == 1) ignite(v, 0.0);
+      if(vertices_[v].degree == 1) ignite(v, 0.0);
     while(!queue.empty()) {
       const Event e = queue.top();
       queue.pop();
-      Arc& a = arcs_[e.second.first];
-      const int end = e.second.second;
-      const int v = end == 0 ? a.u : a.w;
-      if(a.start[end] != infinity()) continue;   // the fronts met inside the curve
-      a.arrived[end] = true;
+      Arc& a = arcs_[e.arc];
+      const int v = e.end == 0 ? a.u : a.w;
+      if(a.start[e.end] != infinity()) continue;   // the fronts met inside the curve
+      a.arrived[e.end] = true;
       Node& n = vertices_[v];
-      if(a.u == a.w) a.arrived[1 - end] = true;   // a loop reaches its vertex at both ends
+      if(a.u == a.w) a.arrived[1 - e.end] = true;   // a loop reaches its vertex at both ends
       ++n.arrived;
-      if(!n.ignited && n.arrived + 1 >= int(n.arcs.size())) ignite(v, e.first);
+      if(!n.ignited && n.arrived + 1 >= n.degree) ignite(v, e.time);
     }
   }
 
   Medial_axis ma_;
   std::vector<Node> vertices_;
   std::vector<Arc> arcs_;
-  std::unordered_map<std::size_t, int> vertex_map_, edge_map_;
+  std::vector<int> incidence_;
+  std::vector<int> vertex_map_, edge_map_;   // by id number
   double last_time_ = 0;
 };
 
@@ -267,18 +303,20 @@ public:
   /// A kept part of a curve.
   struct Curve {
     Halfedge_handle halfedge;  ///< the curve, with its direction
+    Vertex_handle source, target; ///< `halfedge.source()` and `halfedge.target()`
     double begin = 0, end = 0; ///< the kept part, arc lengths from `halfedge.source()`
+    double full_length = 0;    ///< `halfedge.length()`
     double et_begin = 0, et_end = 0; ///< the erosion thickness at both ends (may be infinite)
     bool cut_at_begin() const { return begin > 0; }
-    bool cut_at_end() const { return end < halfedge.length(); }
+    bool cut_at_end() const { return end < full_length; }
     double length() const { return end - begin; }
     std::pair<double, double> begin_point() const
     {
-      return cut_at_begin() ? halfedge.point_at(begin) : Medial_axis::to_xy(halfedge.source().point());
+      return cut_at_begin() ? halfedge.point_at(begin) : Medial_axis::to_xy(source.point());
     }
     std::pair<double, double> end_point() const
     {
-      return cut_at_end() ? halfedge.point_at(end) : Medial_axis::to_xy(halfedge.target().point());
+      return cut_at_end() ? halfedge.point_at(end) : Medial_axis::to_xy(target.point());
     }
   };
 
@@ -286,7 +324,7 @@ public:
   /// The kept parts of curves.
   const std::vector<Curve>& curves() const { return curves_; }
   /// Whether a vertex of the axis is kept.
-  bool is_kept(const Vertex_handle& v) const { return kept_.count(v.id_number()) != 0; }
+  bool is_kept(const Vertex_handle& v) const { return v.id_number() < kept_.size() && kept_[v.id_number()]; }
   /// The kept vertices.
   const std::vector<Vertex_handle>& vertices() const { return vertices_; }
   /// The points that stand alone: for each component of the axis without
@@ -300,7 +338,7 @@ public:
   Pruned_medial_axis_2(const Medial_axis& ma) : ma_(ma) {}
   std::vector<Curve> curves_;
   std::vector<Vertex_handle> vertices_;
-  std::unordered_map<std::size_t, char> kept_;
+  std::vector<char> kept_;   // by id number
   std::vector<std::pair<double, double> > points_;
   std::size_t pruned_ = 0;
   /// \endcond
@@ -368,12 +406,29 @@ Pruned_medial_axis_2<K> prune_medial_axis_2(const Medial_axis_significance_2<K>&
   // it holds; the condition fails at the burning end
   auto cut = [&](const Arc& a, double start_time, bool from_u, double p_end) {
     const Walk w = walk_of(a);
-    double lo = 0, hi = p_end;   // parameters from the burning end: fails at lo, holds at hi
-    for(int i = 0; i < 60; ++i) {
-      const double mid = 0.5 * (lo + hi);
-      if(mid <= lo || mid >= hi) break;
-      if(margin_at_parameter(a, w, mid, start_time, from_u) >= 0) hi = mid;
-      else lo = mid;
+    // parameters from the burning end: the condition fails at lo, holds at
+    // hi; the Illinois variant of the false position method (the margin is
+    // smooth and concave), with bisection steps if it stalls
+    double lo = 0, hi = p_end;
+    double flo = margin_at_parameter(a, w, lo, start_time, from_u), fhi = margin_at_parameter(a, w, hi, start_time, from_u);
+    if(!(flo < 0)) hi = lo;
+    int side = 0;
+    for(int i = 0; i < 100 && hi - lo > 1e-13 * p_end; ++i) {
+      double mid = (flo < 0 && fhi >= 0 && fhi - flo > 0) ? lo + (hi - lo) * (-flo) / (fhi - flo) : 0.5 * (lo + hi);
+      if(!(mid > lo && mid < hi) || i % 8 == 7) mid = 0.5 * (lo + hi);
+      const double f = margin_at_parameter(a, w, mid, start_time, from_u);
+      if(f >= 0) {
+        hi = mid;
+        fhi = f;
+        if(side == 1) flo *= 0.5;
+        side = 1;
+      } else {
+        lo = mid;
+        flo = f;
+        if(side == -1) fhi *= 0.5;
+        side = -1;
+      }
+      if(f == 0) break;
     }
     const double q = from_u ? hi : 1 - hi;
     return w.c.length_at_parameter(q);
@@ -384,16 +439,24 @@ Pruned_medial_axis_2<K> prune_medial_axis_2(const Medial_axis_significance_2<K>&
   // in which they caught fire (not of their times: a curve can be shorter
   // than the precision of a time): a node is kept if the whole curve it
   // sends its front into is, and the node at its other end
-  std::vector<int> order;
+  std::vector<int> order(nodes.size(), -1);   // by rank: the ranks are 0, 1, ... in the order of fire
+  std::size_t ignited = 0;
   for(int v = 0; v < int(nodes.size()); ++v) {
     if(!nodes[v].ignited) kept[v] = 1;
-    else order.push_back(v);
+    else {
+      order[nodes[v].rank] = v;
+      ++ignited;
+    }
   }
-  std::sort(order.begin(), order.end(), [&](int x, int y) { return nodes[x].rank > nodes[y].rank; });
+  order.resize(ignited);
+  std::reverse(order.begin(), order.end());
   std::vector<char> arc_done(arcs.size(), 0);
   auto add_curve = [&](const Arc& a, double b, double e) {
     Curve c;
     c.halfedge = a.halfedge;
+    c.source = nodes[a.u].vertex;
+    c.target = nodes[a.w].vertex;
+    c.full_length = a.length;
     c.begin = (std::max)(0.0, b);
     c.end = (std::min)(a.length, e);
     c.et_begin = c.begin > 0 ? et_of(Sig::time_along(a, c.begin), a.halfedge.radius_at(c.begin))
@@ -459,10 +522,11 @@ Pruned_medial_axis_2<K> prune_medial_axis_2(const Medial_axis_significance_2<K>&
   // curves between nodes that never burn
   for(std::size_t i = 0; i < arcs.size(); ++i)
     if(!arc_done[i] && arcs[i].start[0] == inf && arcs[i].start[1] == inf) add_curve(arcs[i], 0, arcs[i].length);
+  out.kept_.assign(sig.medial_axis().vertex_id_bound(), 0);
   for(int v = 0; v < int(nodes.size()); ++v)
     if(kept[v]) {
       out.vertices_.push_back(nodes[v].vertex);
-      out.kept_.emplace(nodes[v].vertex.id_number(), 1);
+      out.kept_[nodes[v].vertex.id_number()] = 1;
     }
   std::size_t whole = 0;
   for(const Curve& c : out.curves_)
