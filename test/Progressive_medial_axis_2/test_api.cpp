@@ -9,6 +9,9 @@
 
 #include <CGAL/Progressive_medial_axis_2.h>
 #include <CGAL/Progressive_medial_axis_2/Accuracy.h>
+#include <CGAL/Progressive_medial_axis_2/Medial_axis_centerline_2.h>
+#include <CGAL/Progressive_medial_axis_2/Medial_axis_significance_2.h>
+#include <CGAL/Progressive_medial_axis_2/maximum_inscribed_circle_2.h>
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <CGAL/Exact_predicates_exact_constructions_kernel_with_sqrt.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -151,6 +154,52 @@ void kernels()
     error = std::string(e.what()).find("zero-length edge: ring 0") != std::string::npos;
   }
   CHECK(error, "consecutive points that round to one double are reported with Epick traits");
+}
+
+// Significance, pruning, centerline and inscribed circle on the axis of
+// every traits model and of a progressive step: the same answers.
+template <class K>
+void analysis_case(const CGAL::Medial_axis_2<K>& ma, const std::string& name, double radius, std::size_t kept,
+                   std::size_t paths)
+{
+  const auto c = CGAL::maximum_inscribed_circle_2(ma);
+  CHECK(std::fabs(CGAL::to_double(c.radius) - radius) <= 1e-12 * radius,
+        name << ": inscribed circle of radius " << CGAL::to_double(c.radius) << ", expected " << radius);
+  const CGAL::Medial_axis_significance_2<K> sig(ma);
+  const auto pruned = CGAL::prune_medial_axis_2(sig, 0.3 * radius);
+  CHECK(pruned.curves().size() == kept, name << ": " << pruned.curves().size() << " kept curves, expected " << kept);
+  const auto centerline = CGAL::medial_axis_centerline_2(pruned, true);
+  CHECK(centerline.paths().size() == paths,
+        name << ": " << centerline.paths().size() << " centerline paths, expected " << paths);
+}
+
+void analysis()
+{
+  const auto ref = CGAL::medial_axis_2(plate<Epick>());
+  const double radius = CGAL::to_double(CGAL::maximum_inscribed_circle_2(ref).radius);
+  const CGAL::Medial_axis_significance_2<Epick> sig(ref);
+  const auto pruned = CGAL::prune_medial_axis_2(sig, 0.3 * radius);
+  const std::size_t kept = pruned.curves().size();
+  const std::size_t paths = CGAL::medial_axis_centerline_2(pruned, true).paths().size();
+  CHECK(kept > 4 && paths > 1, "plate: " << kept << " kept curves, " << paths << " centerline paths");
+  analysis_case(CGAL::medial_axis_2(plate<Epeck>(), CGAL::Progressive_medial_axis_traits_2<Epeck>()), "Epeck traits",
+                radius, kept, paths);
+  analysis_case(CGAL::medial_axis_2(plate<Epick>(),
+                                    CGAL::Progressive_medial_axis_traits_2<CGAL::Simple_cartesian<double> >()),
+                "double model", radius, kept, paths);
+  analysis_case(CGAL::medial_axis_2(plate<Epick>(),
+                                    CGAL::Progressive_medial_axis_traits_2<CGAL::Simple_cartesian<CORE::Expr> >()),
+                "CORE::Expr model", radius, kept, paths);
+  // at a progressive step: the axis of the current shape
+  CGAL::Progressive_medial_axis_2<> p(plate<Epick>());
+  p.refine_to(p.number_of_steps() / 2);
+  const auto& step = p.medial_axis();
+  const auto c = CGAL::maximum_inscribed_circle_2(step);
+  double best = 0;
+  for(const auto& v : step.vertices()) best = std::max(best, CGAL::to_double(v.radius()));
+  CHECK(c.vertex && CGAL::to_double(c.radius) == best, "progressive step: the inscribed circle");
+  const CGAL::Medial_axis_significance_2<Epick> step_sig(step);
+  CHECK(!CGAL::prune_medial_axis_2(step_sig, 0.1 * best).curves().empty(), "progressive step: pruning");
 }
 
 // Navigation by handles, on the plate.
@@ -414,6 +463,7 @@ int main(int argc, char** argv)
   }
   if(argc > 2) data_dir = argv[2];
   kernels();
+  analysis();
   navigation();
   generators_counter_clockwise();
   degree_four();
