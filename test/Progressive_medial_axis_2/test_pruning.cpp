@@ -204,6 +204,39 @@ void test_band()
   }
 }
 
+// A braided river: a straight band of width 3 with an island in the middle.
+// The centerline keeps both channels: the paths from the two ends to the
+// island and the two channels around it, four chains in all, one cycle.
+void test_braided()
+{
+  Rings r(2);
+  r[0] = {Point(0, 0), Point(20, 0), Point(20, 3), Point(0, 3)};
+  for(int i = 0; i < 40; ++i) {   // an elliptic island, clockwise
+    const double t = -2 * pi * i / 40;
+    r[1].push_back(Point(10 + 3 * std::cos(t), 1.5 + 0.6 * std::sin(t)));
+  }
+  const MA ma = CGAL::medial_axis_2(r);
+  const CGAL::Medial_axis_significance_2<K> sig(ma);
+  const double R = CGAL::to_double(CGAL::maximum_inscribed_circle_2(ma).radius);
+  const auto c = CGAL::medial_axis_centerline_2(CGAL::prune_medial_axis_2(sig, R), true);
+  CHECK(c.paths().size() == 4, "braided river: " << c.paths().size() << " centerline paths");
+  int extended = 0;
+  for(const auto& p : c.paths()) {
+    extended += int(p.has_start_extension) + int(p.has_end_extension);
+    CHECK(!p.closed, "braided river: a closed path");
+  }
+  CHECK(extended == 2, "braided river: " << extended << " extended ends");
+  // the channels pass on both sides of the island
+  bool above = false, below = false;
+  for(const auto& line : c.polylines(1e-3))
+    for(const auto& q : line)
+      if(std::fabs(q.first - 10) < 0.5) {
+        above = above || q.second > 2.1;
+        below = below || q.second < 0.9;
+      }
+  CHECK(above && below, "braided river: the centerline misses a channel");
+}
+
 // The invariants of the grassfire transform, and pruning keeps the topology,
 // on random polygons with holes.
 void test_invariants()
@@ -321,6 +354,7 @@ int main()
   test_bezier();
   test_arms();
   test_band();
+  test_braided();
   test_invariants();
   return pma_test::report("test_pruning");
 }
