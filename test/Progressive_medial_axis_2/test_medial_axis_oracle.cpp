@@ -23,6 +23,7 @@
 #include <pma_test/random_polygons.h>
 #include <pma_test/degenerate_shapes.h>
 #include <pma_test/compare_curves.h>
+#include <pma_test/pruned_graph.h>
 
 #include <algorithm>
 #include <chrono>
@@ -167,29 +168,11 @@ public:
     const CGAL::Medial_axis_significance_2<typename Traits::Kernel> sig(ma);
     const double R = CGAL::to_double(CGAL::maximum_inscribed_circle_2(ma).radius);
     const auto pruned = CGAL::prune_medial_axis_2(sig, 0.25 * R, 0.1);
-    std::map<std::size_t, int> node_of;
-    std::vector<int> parent;
-    auto add = [&]() { parent.push_back(int(parent.size())); return int(parent.size()) - 1; };
-    std::function<int(int)> find = [&](int x) { return parent[x] == x ? x : parent[x] = find(parent[x]); };
-    auto node = [&](const typename MA::Vertex_handle& v) {
-      auto it = node_of.find(v.id_number());
-      if(it != node_of.end()) return it->second;
-      return node_of[v.id_number()] = add();
-    };
-    int edges = 0;
-    for(const auto& c : pruned.curves()) {
-      const int a = c.cut_at_begin() ? add() : node(c.halfedge.source());
-      const int b = c.cut_at_end() ? add() : node(c.halfedge.target());
-      parent[find(a)] = find(b);
-      ++edges;
-    }
-    int components = 0;
-    for(int v = 0; v < int(parent.size()); ++v)
-      if(find(v) == v) ++components;
+    const pma_test::Pruned_graph g = pma_test::pruned_graph(pruned);
     const bool point = pruned.curves().empty() && pruned.isolated_points().size() == 1 && holes == 0;
-    CHECK(point || (components == 1 && edges - int(parent.size()) + 1 == holes),
-          what << " step " << step << ": the pruned axis has " << components << " components and "
-               << (edges - int(parent.size()) + components) << " cycles, the shape " << holes << " holes");
+    CHECK(point || (g.components == 1 && g.cycles == holes),
+          what << " step " << step << ": the pruned axis has " << g.components << " components and " << g.cycles
+               << " cycles, the shape " << holes << " holes");
   }
 
   void check_invariants(const MA& ma, const std::string& step, const std::string& what,

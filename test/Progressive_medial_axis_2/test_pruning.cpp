@@ -17,12 +17,12 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 
 #include <pma_test/check.h>
+#include <pma_test/pruned_graph.h>
 #include <pma_test/random_polygons.h>
 
 #include <cmath>
 #include <cstdint>
 #include <iostream>
-#include <map>
 #include <random>
 #include <string>
 #include <vector>
@@ -35,46 +35,6 @@ typedef std::vector<std::vector<Point> > Rings;
 typedef CGAL::Medial_axis_2<K> MA;
 typedef CGAL::Pruned_medial_axis_2<K> Pruned;
 const double pi = 3.14159265358979323846;
-
-// The ends (nodes of degree 1), components and independent cycles of a
-// pruned axis, as a graph whose nodes are kept vertices and cut ends.
-struct Graph_counts {
-  int ends = 0, components = 0, cycles = 0;
-};
-Graph_counts count_graph(const Pruned& p)
-{
-  std::map<std::size_t, int> vertex_node;
-  std::vector<int> parent, degree;
-  auto add = [&]() {
-    parent.push_back(int(parent.size()));
-    degree.push_back(0);
-    return int(parent.size()) - 1;
-  };
-  auto node = [&](const MA::Vertex_handle& v) {
-    auto it = vertex_node.find(v.id_number());
-    if(it != vertex_node.end()) return it->second;
-    const int n = add();
-    vertex_node[v.id_number()] = n;
-    return n;
-  };
-  std::function<int(int)> find = [&](int x) { return parent[x] == x ? x : parent[x] = find(parent[x]); };
-  int edges = 0;
-  for(const auto& c : p.curves()) {
-    const int a = c.cut_at_begin() ? add() : node(c.halfedge.source());
-    const int b = c.cut_at_end() ? add() : node(c.halfedge.target());
-    ++degree[a];
-    ++degree[b];
-    parent[find(a)] = find(b);
-    ++edges;
-  }
-  Graph_counts g;
-  for(int v = 0; v < int(parent.size()); ++v) {
-    if(find(v) == v) ++g.components;
-    if(degree[v] == 1) ++g.ends;
-  }
-  g.cycles = edges - int(parent.size()) + g.components;
-  return g;
-}
 
 // A star of K smooth arms: r(t) = 1 + 2 ((1 + cos(K t)) / 2)^6, sampled at n
 // points, each moved radially by a uniform noise in [-noise, noise].
@@ -143,13 +103,13 @@ void test_arms()
       const MA ma = CGAL::medial_axis_2(r);
       const CGAL::Medial_axis_significance_2<K> sig(ma);
       const Pruned p = CGAL::prune_medial_axis_2(sig, 0.2);
-      const Graph_counts g = count_graph(p);
+      const pma_test::Pruned_graph g = pma_test::pruned_graph(p);
       const std::string what = std::to_string(arms) + " arms" + (noisy ? ", noisy" : "");
       CHECK(g.ends == arms, what << ": " << g.ends << " ends after pruning et=0.2 (axis: " << ma.number_of_edges()
                                  << " curves)");
       CHECK(g.components == 1 && g.cycles == 0, what << ": " << g.components << " components, " << g.cycles << " cycles");
       // the ratio threshold alone is free of scale: the same ends
-      const Graph_counts q = count_graph(CGAL::prune_medial_axis_2(sig, 0, 0.5));
+      const pma_test::Pruned_graph q = pma_test::pruned_graph(CGAL::prune_medial_axis_2(sig, 0, 0.5));
       CHECK(q.ends == arms, what << ": " << q.ends << " ends after pruning ratio=0.5");
     }
 }
@@ -273,7 +233,7 @@ void test_invariants()
     const double R = CGAL::to_double(CGAL::maximum_inscribed_circle_2(ma).radius);
     for(double f : {0.05, 0.3, 1.0}) {
       const Pruned p = CGAL::prune_medial_axis_2(sig, f * R, f == 1.0 ? 0.2 : 0);
-      const Graph_counts g = count_graph(p);
+      const pma_test::Pruned_graph g = pma_test::pruned_graph(p);
       const bool point = p.curves().empty() && p.isolated_points().size() == 1;
       CHECK(point || (g.components == 1 && g.cycles == holes),
             what << ", et=" << f << "R: " << g.components << " components, " << g.cycles << " cycles, " << holes

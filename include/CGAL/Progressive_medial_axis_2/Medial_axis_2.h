@@ -705,22 +705,12 @@ private:
     return c;
   }
 
-  // Distance from (x, y) to the generator of cell f, in double, in a frame
-  // scaled to the points so that neither squares nor products overflow.
+  // Distance from q to the generator of cell f, in double.
   static double distance_to_generator(const Data* d, int f, const std::pair<double, double>& q)
   {
     if(f < 0) return 0;
     const auto& F = d->hds.face(f);
-    const auto a = to_xy(d->points[F.p0]), b = to_xy(d->points[F.p1]);
-    const double sc = (std::max)({std::fabs(a.first), std::fabs(a.second), std::fabs(b.first), std::fabs(b.second),
-                                  std::fabs(q.first), std::fabs(q.second)});
-    if(!(sc > 0)) return 0;
-    const double ax = a.first / sc, ay = a.second / sc, bx = b.first / sc, by = b.second / sc;
-    const double px = q.first / sc, py = q.second / sc;
-    const double dx = bx - ax, dy = by - ay, l2 = dx * dx + dy * dy;
-    double t = l2 > 0 ? ((px - ax) * dx + (py - ay) * dy) / l2 : 0;
-    t = (std::min)(1.0, (std::max)(0.0, t));
-    return std::hypot(px - ax - t * dx, py - ay - t * dy) * sc;
+    return Progressive_medial_axes::internal::distance_to_segment(q, to_xy(d->points[F.p0]), to_xy(d->points[F.p1]));
   }
 
   std::shared_ptr<const Data> d_;

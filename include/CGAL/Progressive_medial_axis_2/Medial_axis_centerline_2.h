@@ -27,6 +27,22 @@
 #include <vector>
 
 namespace CGAL {
+namespace Progressive_medial_axes {
+namespace internal {
+
+// Calls f(a, b) for every edge of the input polygon of ma, in double.
+template <class Medial_axis, class F>
+void for_each_input_edge(const Medial_axis& ma, const F& f)
+{
+  for(std::size_t r = 0; r < ma.number_of_input_rings(); ++r) {
+    const std::size_t n = ma.input_ring_size(r);
+    for(std::size_t i = 0; i < n; ++i)
+      f(Medial_axis::to_xy(ma.point({int(r), int(i)})), Medial_axis::to_xy(ma.point({int(r), int((i + 1) % n)})));
+  }
+}
+
+} // namespace internal
+} // namespace Progressive_medial_axes
 
 /*!
 \ingroup PkgProgressiveMedialAxis2Ref
@@ -172,17 +188,9 @@ public:
   double distance_to_boundary(const Point& q) const
   {
     double best = std::numeric_limits<double>::infinity();
-    for(std::size_t r = 0; r < ma_.number_of_input_rings(); ++r) {
-      const std::size_t n = ma_.input_ring_size(r);
-      for(std::size_t i = 0; i < n; ++i) {
-        const Point a = Medial_axis::to_xy(ma_.point({int(r), int(i)}));
-        const Point b = Medial_axis::to_xy(ma_.point({int(r), int((i + 1) % n)}));
-        const double dx = b.first - a.first, dy = b.second - a.second, l2 = dx * dx + dy * dy;
-        double t = l2 > 0 ? ((q.first - a.first) * dx + (q.second - a.second) * dy) / l2 : 0;
-        t = (std::min)(1.0, (std::max)(0.0, t));
-        best = (std::min)(best, std::hypot(q.first - a.first - t * dx, q.second - a.second - t * dy));
-      }
-    }
+    Progressive_medial_axes::internal::for_each_input_edge(ma_, [&](const Point& a, const Point& b) {
+      best = (std::min)(best, Progressive_medial_axes::internal::distance_to_segment(q, a, b));
+    });
     return best;
   }
   /// \endcond
@@ -221,20 +229,15 @@ std::pair<double, double> shoot_ray(const Medial_axis& ma, const std::pair<doubl
                                     const std::pair<double, double>& d)
 {
   double best = std::numeric_limits<double>::infinity();
-  for(std::size_t r = 0; r < ma.number_of_input_rings(); ++r) {
-    const std::size_t n = ma.input_ring_size(r);
-    for(std::size_t i = 0; i < n; ++i) {
-      const auto a = Medial_axis::to_xy(ma.point({int(r), int(i)}));
-      const auto b = Medial_axis::to_xy(ma.point({int(r), int((i + 1) % n)}));
-      const double ex = b.first - a.first, ey = b.second - a.second;
-      const double den = d.first * ey - d.second * ex;
-      if(den == 0) continue;
-      const double wx = a.first - p.first, wy = a.second - p.second;
-      const double t = (wx * ey - wy * ex) / den;   // along the ray
-      const double u = (wx * d.second - wy * d.first) / den;   // along the edge
-      if(t > 0 && u >= 0 && u <= 1 && t < best) best = t;
-    }
-  }
+  for_each_input_edge(ma, [&](const std::pair<double, double>& a, const std::pair<double, double>& b) {
+    const double ex = b.first - a.first, ey = b.second - a.second;
+    const double den = d.first * ey - d.second * ex;
+    if(den == 0) return;
+    const double wx = a.first - p.first, wy = a.second - p.second;
+    const double t = (wx * ey - wy * ex) / den;   // along the ray
+    const double u = (wx * d.second - wy * d.first) / den;   // along the edge
+    if(t > 0 && u >= 0 && u <= 1 && t < best) best = t;
+  });
   if(best == std::numeric_limits<double>::infinity()) return p;
   return std::make_pair(p.first + best * d.first, p.second + best * d.second);
 }

@@ -388,24 +388,21 @@ Pruned_medial_axis_2<K> prune_medial_axis_2(const Medial_axis_significance_2<K>&
   };
   auto margin_at_vertex = [&](int v) { return margin(nodes[v].time, nodes[v].radius); };
   auto et_of = [&](double time, double radius) { return time == inf ? inf : (std::max)(0.0, time - radius); };
-  // margin at parameter p of the curve of a (p from u's end, 0..1)
-  struct Walk {
-    Progressive_medial_axes::internal::Curve c;
-    bool reversed;
-  };
-  auto walk_of = [&](const Arc& a) { return Walk{a.halfedge.geometry(), false}; };
-  auto margin_at_parameter = [&](const Arc& a, const Walk& w, double p, double start_time, bool from_u) {
+  typedef Progressive_medial_axes::internal::Curve Geometry;
+  // margin at parameter p of curve c of arc a, p from the burning end (u if
+  // from_u), 0..1
+  auto margin_at_parameter = [&](const Arc& a, const Geometry& c, double p, double start_time, bool from_u) {
     const double q = from_u ? p : 1 - p;   // parameter from u
-    const double s = w.c.length_at_parameter(q);
+    const double s = c.length_at_parameter(q);
     const double x = from_u ? s : a.length - s;  // arc length from the burning end
-    const double r = a.halfedge.distance_to_point(w.c.point_at_parameter(q));
+    const double r = a.halfedge.distance_to_point(c.point_at_parameter(q));
     return margin(start_time + x, r);
   };
   // the arc length from u of the first point where the condition holds,
   // walking from the burning end (u if from_u) towards the other end, where
   // it holds; the condition fails at the burning end
   auto cut = [&](const Arc& a, double start_time, bool from_u, double p_end) {
-    const Walk w = walk_of(a);
+    const Geometry w = a.halfedge.geometry();
     // parameters from the burning end: the condition fails at lo, holds at
     // hi; the Illinois variant of the false position method (the margin is
     // smooth and concave), with bisection steps if it stalls
@@ -431,7 +428,7 @@ Pruned_medial_axis_2<K> prune_medial_axis_2(const Medial_axis_significance_2<K>&
       if(f == 0) break;
     }
     const double q = from_u ? hi : 1 - hi;
-    return w.c.length_at_parameter(q);
+    return w.length_at_parameter(q);
   };
 
   std::vector<char> kept(nodes.size(), 0);
@@ -487,16 +484,7 @@ Pruned_medial_axis_2<K> prune_medial_axis_2(const Medial_axis_significance_2<K>&
         out.points_.push_back(a.halfedge.point_at(m));
         continue;
       }
-      // the parameter of the meeting point
-      const auto w = walk_of(a);
-      double plo = 0, phi = 1;
-      for(int i = 0; i < 60; ++i) {
-        const double mid = 0.5 * (plo + phi);
-        if(mid <= plo || mid >= phi) break;
-        if(w.c.length_at_parameter(mid) < m) plo = mid;
-        else phi = mid;
-      }
-      const double pmeet = 0.5 * (plo + phi);
+      const double pmeet = a.halfedge.geometry().parameter_at_length(m);
       const bool keep_u = margin_at_vertex(a.u) >= 0, keep_w = margin_at_vertex(a.w) >= 0;
       const double b = keep_u ? 0 : cut(a, a.start[0], true, pmeet);
       const double e = keep_w ? a.length : cut(a, a.start[1], false, 1 - pmeet);
@@ -508,8 +496,7 @@ Pruned_medial_axis_2<K> prune_medial_axis_2(const Medial_axis_significance_2<K>&
     arc_done[n.out] = 1;
     if(!kept[other]) continue;
     // the condition at the far end, reached by this curve's front
-    const Walk w = walk_of(a);
-    if(margin_at_parameter(a, w, 1, start, from_u) < 0) continue;
+    if(margin_at_parameter(a, a.halfedge.geometry(), 1, start, from_u) < 0) continue;
     if(margin_at_vertex(v) >= 0) {
       kept[v] = 1;
       add_curve(a, 0, a.length);

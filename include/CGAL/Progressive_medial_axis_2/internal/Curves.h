@@ -28,6 +28,22 @@ namespace CGAL {
 namespace Progressive_medial_axes {
 namespace internal {
 
+/// The distance from q to the segment from a to b, in double, computed in a
+/// frame scaled to the points so that neither squares nor products overflow.
+inline double distance_to_segment(const std::pair<double, double>& q, const std::pair<double, double>& a,
+                                  const std::pair<double, double>& b)
+{
+  const double sc = (std::max)({std::fabs(a.first), std::fabs(a.second), std::fabs(b.first), std::fabs(b.second),
+                                std::fabs(q.first), std::fabs(q.second)});
+  if(!(sc > 0)) return 0;
+  const double ax = a.first / sc, ay = a.second / sc, bx = b.first / sc, by = b.second / sc;
+  const double px = q.first / sc, py = q.second / sc;
+  const double dx = bx - ax, dy = by - ay, l2 = dx * dx + dy * dy;
+  double t = l2 > 0 ? ((px - ax) * dx + (py - ay) * dy) / l2 : 0;
+  t = (std::min)(1.0, (std::max)(0.0, t));
+  return std::hypot(px - ax - t * dx, py - ay - t * dy) * sc;
+}
+
 /// A medial curve from `a` to `b`: a segment, or an arc of a parabola.
 struct Curve {
   typedef std::pair<double, double> Point;
@@ -129,16 +145,24 @@ struct Curve {
     return std::fabs(arc(xa + (xb - xa) * u) - arc(xa)) * scale;
   }
 
+  /// The parameter (see point_at_parameter()) of the point at arc length s
+  /// from a, clamped to [0, 1].
+  double parameter_at_length(double s) const
+  {
+    const double L = length();
+    if(!(s > 0)) return 0;
+    if(!(s < L)) return 1;
+    if(!parabolic) return s / L;
+    const double xa = abscissa(a), xb = abscissa(b);
+    return (abscissa_at_length(s) - xa) / (xb - xa);
+  }
+
   /// The point at arc length s from a (0 <= s <= length()).
   Point point_at_length(double s) const
   {
-    const double L = length();
     if(!(s > 0)) return a;
-    if(!(s < L)) return b;
-    if(!parabolic) {
-      const double t = s / L;
-      return Point(a.first + (b.first - a.first) * t, a.second + (b.second - a.second) * t);
-    }
+    if(!(s < length())) return b;
+    if(!parabolic) return point_at_parameter(parameter_at_length(s));
     return at(abscissa_at_length(s));
   }
 
