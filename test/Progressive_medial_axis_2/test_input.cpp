@@ -216,7 +216,7 @@ int test_wkt_reading()
   CHECK_INPUT_ERROR(read_wkt("LINESTRING (0 0, 1 1)"), "not a polygon: found LINESTRING", -1, -1);
   CHECK_INPUT_ERROR(read_wkt("point (0 0)"), "not a polygon: found POINT", -1, -1);
   CHECK_INPUT_ERROR(read_wkt("MULTIPOLYGON (((0 0, 1 0, 1 1, 0 0)), ((2 2, 3 2, 3 3, 2 2)))"),
-                    "not a polygon: found MULTIPOLYGON with more than one polygon", -1, -1);
+                    "not a polygon: found 2 polygons", -1, -1);
   CHECK_INPUT_ERROR(read_wkt("POLYGON ((0 0, 1 0, nan 1, 0 0))"), "non-finite coordinate: ring 0 vertex 2", 0, 2);
   CHECK_INPUT_ERROR(read_wkt("POLYGON ((0 0, 1 0, 1 1, 0 0), (0 0, 1 0, 1 -inf, 0 0))"),
                     "non-finite coordinate: ring 1 vertex 2", 1, 2);
@@ -321,20 +321,20 @@ int test_geojson_reading()
     REQUIRE(same_rings(read_geojson(text), ring));
   }
 
-  // Errors.
+  // Errors (the JSON syntax is nlohmann-json's, with its line and column).
   CHECK_INPUT_ERROR(read_geojson(R"({"type": "Polygon", "coordinates": [[[0, 0], [1, 0] [1, 1], [0, 0]]]})"),
-                    "malformed JSON at line 1, column 53: expected ',' or ']'", -1, -1);
+                    "malformed JSON at line 1, column 53: syntax error", -1, -1);
   CHECK_INPUT_ERROR(read_geojson("{\"type\": \"Polygon\",\n \"coordinates\": [[[0, 0], [1, 0], [1, 1], [0, 0]]]"),
                     "malformed JSON at line 2, column 51", -1, -1);
   CHECK_INPUT_ERROR(read_geojson(R"({"type": "Polygon", "coordinates": [[[0, 0], [1, 0], [1, 1], [0, 0]]]} x)"),
-                    "unexpected text after the JSON value", -1, -1);
+                    "expected end of input", -1, -1);
   CHECK_INPUT_ERROR(read_geojson(R"({"type": "Polygon", "coordinates": [[[01, 0], [1, 0], [1, 1], [0, 0]]]})"),
                     "malformed JSON", -1, -1);
-  CHECK_INPUT_ERROR(read_geojson(R"({"type": "Polygon" "coordinates": []})"), "expected ',' or '}'", -1, -1);
+  CHECK_INPUT_ERROR(read_geojson(R"({"type": "Polygon" "coordinates": []})"), "expected '}'", -1, -1);
   CHECK_INPUT_ERROR(read_geojson(R"({"type": "Polygon", "coordinates": [[[0, 0], [1, "0"], [1, 1], [0, 0]]]})"),
-                    "malformed GeoJSON at line 1, column 50: expected a number", -1, -1);
+                    "malformed GeoJSON: ring 0 vertex 1: expected a number", 0, 1);
   CHECK_INPUT_ERROR(read_geojson(R"({"type": "Polygon", "coordinates": [[[0, 0], [1], [1, 1], [0, 0]]]})"),
-                    "a position needs 2 coordinates", -1, -1);
+                    "ring 0 vertex 1 is not a position of 2 numbers", 0, 1);
   CHECK_INPUT_ERROR(read_geojson(R"({"coordinates": []})"), "without a \"type\"", -1, -1);
   CHECK_INPUT_ERROR(read_geojson(R"([1, 2])"), "expected a GeoJSON object", -1, -1);
   CHECK_INPUT_ERROR(read_geojson(""), "no polygon", -1, -1);
@@ -342,28 +342,72 @@ int test_geojson_reading()
   CHECK_INPUT_ERROR(read_geojson(R"({"type": "MultiPolygon", "coordinates": []})"), "empty polygon", -1, -1);
   CHECK_INPUT_ERROR(read_geojson(R"({"type": "LineString", "coordinates": [[0, 0], [1, 1]]})"),
                     "not a polygon: found LineString", -1, -1);
-  CHECK_INPUT_ERROR(read_geojson(R"({"type": "GeometryCollection", "geometries": []})"),
-                    "not a polygon: found GeometryCollection", -1, -1);
+  CHECK_INPUT_ERROR(read_geojson(R"({"type": "GeometryCollection", "geometries": []})"), "empty polygon", -1, -1);
   CHECK_INPUT_ERROR(read_geojson(R"({"type": "Feature", "geometry": {"type": "Point", "coordinates": [0, 0]}})"),
                     "not a polygon: found Point", -1, -1);
-  CHECK_INPUT_ERROR(read_geojson(R"({"type": "Feature", "geometry": null})"),
-                    "not a polygon: found a Feature without geometry", -1, -1);
-  CHECK_INPUT_ERROR(read_geojson(R"({"type": "FeatureCollection", "features": []})"),
-                    "not a polygon: found FeatureCollection with 0 features", -1, -1);
+  CHECK_INPUT_ERROR(read_geojson(R"({"type": "Feature", "geometry": null})"), "empty polygon", -1, -1);
+  CHECK_INPUT_ERROR(read_geojson(R"({"type": "FeatureCollection", "features": []})"), "empty polygon", -1, -1);
+  CHECK_INPUT_ERROR(read_geojson(R"({"type": "FeatureCollection", "features": [{"type": "Feature", "geometry":
+                      {"type": "Polygon", "coordinates": [[[0, 0], [1, 0], [1, 1], [0, 0]]]}}, {"type": "Feature",
+                      "geometry": {"type": "LineString", "coordinates": [[0, 0], [1, 1]]}}]})"),
+                    "not a polygon: found LineString in feature 1", -1, -1);
   CHECK_INPUT_ERROR(read_geojson(R"({"type": "MultiPolygon", "coordinates": [[[[0, 0], [1, 0], [1, 1], [0, 0]]], [[[2, 2], [3, 2], [3, 3], [2, 2]]]]})"),
-                    "not a polygon: found MultiPolygon with more than one polygon", -1, -1);
+                    "not a polygon: found 2 polygons", -1, -1);
   CHECK_INPUT_ERROR(read_geojson(R"({"type": "Polygon", "coordinates": [[[0, 0, 0], [1, 0, 0], [1, 1, 0], [0, 0, 0]]]})"),
                     "only 2D coordinates are supported", 0, 0);
   CHECK_INPUT_ERROR(read_geojson(R"({"type": "Polygon", "coordinates": [[[0, 0], [1, 0], [NaN, 1], [0, 0]]]})"),
-                    "non-finite coordinate: ring 0 vertex 2", 0, 2);
-  CHECK_INPUT_ERROR(read_geojson(R"({"type": "Polygon", "coordinates": [[[0, 0], [1, 0], [1, 1], [0, 0]], [[0, 0], [-Infinity, 0], [1, 1], [0, 0]]]})"),
-                    "non-finite coordinate: ring 1 vertex 1", 1, 1);
+                    "malformed JSON at line 1, column 55", -1, -1);
   CHECK_INPUT_ERROR(read_geojson(R"({"type": "Polygon", "coordinates": [[[0, 0], [1, 0], [1, 1e999], [0, 0]]]})"),
-                    "non-finite coordinate: ring 0 vertex 2", 0, 2);
+                    "malformed JSON: number overflow parsing '1e999'", -1, -1);
   CHECK_INPUT_ERROR(read_geojson(R"({"type": "Polygon", "coordinates": [[[0, 0], [1, 0], [1, 1], [0, 1]]]})"),
                     "unclosed ring: ring 0 (first point (0, 0), last point (0, 1))", 0, -1);
   CHECK_INPUT_ERROR(read_geojson(R"({"type": "Polygon", "coordinates": [[[0, 0], [1, 0], [0, 0]]]})"),
                     "ring 0 has fewer than 4 points", 0, -1);
+  return 0;
+}
+
+// ------------------------------------------------------------------ several polygons
+
+int test_multi_reading()
+{
+  typedef std::vector<pma_tool::Input_polygon<Point> > Polygons;
+  auto wkt = [](const std::string& text) {
+    std::istringstream in(text);
+    return pma_tool::read_wkt_polygons<Point>(in);
+  };
+  auto geojson = [](const std::string& text) {
+    std::istringstream in(text);
+    return pma_tool::read_geojson_polygons<Point>(in);
+  };
+  // WKT: MULTIPOLYGON, nested GEOMETRYCOLLECTION, EMPTY parts skipped, in input order
+  Polygons p = wkt("MULTIPOLYGON (((0 0, 1 0, 1 1, 0 0)), EMPTY, ((2 2, 3 2, 3 3, 2 3, 2 2), (2.2 2.2, 2.2 2.4, 2.4 2.2, 2.2 2.2)))");
+  REQUIRE(p.size() == 2 && p[0].rings.size() == 1 && p[1].rings.size() == 2 && p[1].rings[0].size() == 4);
+  p = wkt("geometrycollection (POLYGON ((0 0, 1 0, 1 1, 0 0)), GEOMETRYCOLLECTION (MULTIPOLYGON (((5 5, 6 5, 6 6, 5 5)), "
+          "((7 7, 8 7, 8 8, 7 7))), POLYGON EMPTY), MULTIPOLYGON EMPTY)");
+  REQUIRE(p.size() == 3 && p[1].rings[0][0] == Point(5, 5) && p[2].rings[0][0] == Point(7, 7));
+  CHECK_INPUT_ERROR(wkt("MULTIPOLYGON (((0 0, 1 0, 1 1, 0 0)), ((2 2, 3 2, 3 3, 2 3)))"),
+                    "polygon 1: unclosed ring: ring 0", 0, -1);
+  CHECK_INPUT_ERROR(wkt("GEOMETRYCOLLECTION (POLYGON ((0 0, 1 0, 1 1, 0 0)), LINESTRING (0 0, 1 1))"),
+                    "not a polygon: found LINESTRING", -1, -1);
+  CHECK_INPUT_ERROR(wkt("GEOMETRYCOLLECTION EMPTY"), "empty polygon", -1, -1);
+  CHECK_INPUT_ERROR(wkt("MULTIPOLYGON (((0 0, 1 0, 1 1, 0 0))"), "malformed WKT at line 1, column 37", -1, -1);
+
+  // GeoJSON: features, MultiPolygons and collections, properties kept (members in input order)
+  p = geojson(R"({"type": "FeatureCollection", "features": [
+    {"type": "Feature", "properties": {"name": "A", "z": 1, "a": [1, {"k": "v"}]},
+     "geometry": {"type": "MultiPolygon", "coordinates": [[[[0, 0], [1, 0], [1, 1], [0, 0]]], [], [[[2, 2], [3, 2], [3, 3], [2, 2]]]]}},
+    {"type": "Feature", "properties": null, "geometry": null},
+    {"type": "Feature", "properties": {"name": "B \u00e9"}, "geometry": {"type": "GeometryCollection", "geometries": [
+      {"type": "Polygon", "coordinates": [[[5, 5], [6, 5], [6, 6], [5, 5]]]}]}},
+    {"type": "Feature", "geometry": {"type": "Polygon", "coordinates": [[[9, 9], [10, 9], [10, 10], [9, 9]]]}}]})");
+  REQUIRE(p.size() == 4);
+  REQUIRE(p[0].properties == R"({"name":"A","z":1,"a":[1,{"k":"v"}]})" && p[1].properties == p[0].properties);
+  REQUIRE(p[2].properties == "{\"name\":\"B \xC3\xA9\"}" && p[2].rings[0][0] == Point(5, 5));
+  REQUIRE(p[3].properties.empty() && p[3].rings[0][0] == Point(9, 9));
+  CHECK_INPUT_ERROR(geojson(R"({"type": "MultiPolygon", "coordinates": [[[[0, 0], [1, 0], [1, 1], [0, 0]]], [[[2, 2], [3, 2], [3, 3, 3], [2, 2]]]]})"),
+                    "polygon 1: only 2D coordinates are supported (ring 0 vertex 2", 0, 2);
+  CHECK_INPUT_ERROR(geojson(R"({"type": "FeatureCollection", "features": [{"type": "Polygon", "coordinates": []}]})"),
+                    "feature 0 is a Polygon, not a Feature", -1, -1);
   return 0;
 }
 
@@ -385,7 +429,7 @@ int test_invalid_files()
     { "z_coordinates.wkt", false, "only 2D coordinates are supported", ANY, ANY },
     { "third_coordinate.wkt", false, "only 2D coordinates are supported", 0, 0 },
     { "not_polygon.wkt", false, "not a polygon: found LINESTRING", -1, -1 },
-    { "multipolygon_two.wkt", false, "not a polygon: found MULTIPOLYGON with more than one polygon", -1, -1 },
+    { "multipolygon_two.wkt", false, "not a polygon: found 2 polygons", -1, -1 },
     { "trailing_garbage.wkt", false, "malformed WKT at line 1, column 32: unexpected text after the polygon", -1, -1 },
     { "non_finite.wkt", false, "non-finite coordinate: ring 0 vertex 2", 0, 2 },
     { "unclosed.wkt", false, "unclosed ring: ring 0 (first point (0, 0), last point (0, 1))", 0, -1 },
@@ -399,14 +443,14 @@ int test_invalid_files()
     { "overlap.wkt", true, "self-intersection: ring 0 edge 3 (vertices 3-0) overlaps ring 1 edge 2 (vertices 2-0)", 0, 3 },
     { "hole_outside.wkt", true, "hole 1 (ring 1) is not inside the outer ring", 1, -1 },
     { "hole_in_hole.wkt", true, "hole 2 (ring 2) lies inside hole 1 (ring 1)", 2, -1 },
-    { "malformed.geojson", false, "malformed JSON at line 1, column 53: expected ',' or ']'", -1, -1 },
+    { "malformed.geojson", false, "malformed JSON at line 1, column 53: syntax error", -1, -1 },
     { "not_polygon.geojson", false, "not a polygon: found LineString", -1, -1 },
     { "empty.geojson", false, "empty polygon", -1, -1 },
-    { "two_features.geojson", false, "not a polygon: found FeatureCollection with 2 features", -1, -1 },
-    { "feature_without_geometry.geojson", false, "not a polygon: found a Feature without geometry", -1, -1 },
+    { "two_features.geojson", false, "not a polygon: found 2 polygons", -1, -1 },
+    { "feature_without_geometry.geojson", false, "empty polygon", -1, -1 },
     { "z_coordinates.geojson", false, "only 2D coordinates are supported", 0, 0 },
     { "unclosed.geojson", false, "unclosed ring: ring 0 (first point (0, 0), last point (0, 1))", 0, -1 },
-    { "non_finite.geojson", false, "non-finite coordinate: ring 0 vertex 2", 0, 2 },
+    { "non_finite.geojson", false, "malformed JSON at line 1", -1, -1 },
     { "crossing.geojson", true, "self-intersection: ring 0 edge 0 (vertices 0-1) crosses ring 0 edge 2 (vertices 2-3)", 0, 0 },
   };
   for(const Invalid_file& f : files) {
@@ -885,6 +929,7 @@ int main()
     { "WKT reading", test_wkt_reading },
     { "WKT writing", test_wkt_writing },
     { "GeoJSON reading", test_geojson_reading },
+    { "several polygons", test_multi_reading },
     { "invalid files", test_invalid_files },
     { "shipped data", test_shipped_data },
     { "valid polygons", test_valid_polygons },

@@ -7,6 +7,8 @@
 
 #include <pma_test/compare_curves.h>
 
+#include <nlohmann/json.hpp>
+
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -304,6 +306,134 @@ void analysis_outputs(const std::string& data)
   }
 }
 
+// The text of the rings of a WKT POLYGON file, "((...), (...))".
+std::string polygon_text(const std::string& file)
+{
+  std::string w = slurp(file);
+  return w.substr(w.find('('), w.rfind(')') - w.find('(') + 1);
+}
+
+// The pairs of the output lines that start with prefix p<k>:, without it.
+std::vector<pma_test::Oracle_curve> pairs_of_polygon(const std::string& out, std::size_t k, std::size_t* lines = nullptr)
+{
+  const std::string prefix = "p" + std::to_string(k) + ":";
+  std::istringstream in(out);
+  std::string line, kept;
+  std::size_t n = 0;
+  while(std::getline(in, line)) {
+    std::string t;
+    std::istringstream w(line);
+    std::string word;
+    bool mine = false;
+    while(w >> word) {
+      if(word.compare(0, prefix.size(), prefix) == 0) {
+        mine = true;
+        word = word.substr(prefix.size());
+      }
+      t += (t.empty() ? "" : " ") + word;
+    }
+    if(mine) {
+      kept += t + "\n";
+      ++n;
+    }
+  }
+  if(lines) *lines = n;
+  std::istringstream k_in(kept);
+  return pma_test::parse_pairs(k_in);
+}
+
+// Several polygons in one file (MULTIPOLYGON, GEOMETRYCOLLECTION, GeoJSON
+// FeatureCollection): one axis per polygon, ids p<k>:, each against the
+// oracle, the same with 1 and 2 threads, the input properties in GeoJSON.
+void several_polygons(const std::string& data)
+{
+  const std::vector<std::string> files = {data + "/syn_comb50.wkt", data + "/syn_spiral20.wkt", data + "/syn_maze20.wkt",
+                                          data + "/syn_cheese1k.wkt"};
+  std::string multi = "MULTIPOLYGON (" + polygon_text(files[0]) + ", " + polygon_text(files[1]) + ")";
+  std::ofstream(tmp + "/multi.wkt") << "GEOMETRYCOLLECTION (" << multi << ", POLYGON EMPTY, POLYGON " << polygon_text(files[2])
+                                    << ", POLYGON " << polygon_text(files[3]) << ")\n";
+  Result ours = run(tool + " --pairs --stats --inscribed-circle --threads 2 " + tmp + "/multi.wkt");
+  CHECK(ours.status == 0, "several polygons: exit status " << ours.status << ": " << ours.err);
+  CHECK(ours.out.find("\npolygons 4\n") != std::string::npos, "several polygons: --stats has no 'polygons 4'");
+  Result one = run(tool + " --pairs --stats --inscribed-circle --threads 1 " + tmp + "/multi.wkt");
+  auto without_times = [](const std::string& out) {
+    std::istringstream in(out);
+    std::string line, kept;
+    while(std::getline(in, line))
+      if(line.compare(0, 5, "pair ") == 0 || line.compare(0, 7, "circle ") == 0 || line.compare(0, 9, "polygons ") == 0)
+        kept += line + "\n";   // (the event counts depend on the parts, so on the threads)
+    return kept;
+  };
+  CHECK(one.status == 0 && without_times(one.out) == without_times(ours.out),
+        "several polygons: the output with 1 thread differs from the output with 2");
+  for(std::size_t k = 0; k < files.size(); ++k) {
+    std::size_t lines = 0;
+    const auto ca = pairs_of_polygon(ours.out, k, &lines);
+    Result theirs = run(sdg_pairs + " " + files[k]);
+    std::istringstream b(theirs.out);
+    const auto cb = pma_test::parse_pairs(b);
+    pma_test::Curve_diff d = pma_test::compare_curves(ca, cb, 1.0);
+    CHECK(theirs.status == 0 && !ca.empty() && d.ok(),
+          "several polygons: p" << k << " (" << files[k] << ") differs from sdg_pairs\n" << d.report());
+    const std::string circle = "circle p" + std::to_string(k) + " ";
+    CHECK(ours.out.find("\n" + circle) != std::string::npos || ours.out.compare(0, circle.size(), circle) == 0,
+          "several polygons: no line '" << circle << "X Y R'");
+  }
+
+  // GeoJSON: a FeatureCollection of a MultiPolygon feature (two parts, one
+  // with a hole), a feature without geometry and a Polygon feature; the
+  // output features carry their input feature's properties
+  std::ofstream(tmp + "/fc.geojson") << R"({"type": "FeatureCollection", "features": [
+    {"type": "Feature", "properties": {"name": "A", "length": "input's", "pop": 12},
+     "geometry": {"type": "MultiPolygon", "coordinates": [[[[0, 0], [4, 0], [4, 3], [0, 3], [0, 0]], [[1, 1], [1, 2], [2, 2], [2, 1], [1, 1]]],
+                                                          [[[10, 0], [13, 0], [13, 3], [10, 0]]]]}},
+    {"type": "Feature", "properties": {"name": "nowhere"}, "geometry": null},
+    {"type": "Feature", "properties": {"name": "B", "tags": {"x": [1, 2]}},
+     "geometry": {"type": "Polygon", "coordinates": [[[20, 0], [22, 0], [21, 1], [20, 0]]]}}]})";
+  Result g = run(tool + " --pairs --geojson " + tmp + "/fc_axis.geojson " + tmp + "/fc.geojson");
+  CHECK(g.status == 0, "FeatureCollection: exit status " << g.status << ": " << g.err);
+  std::size_t per_polygon[3] = {0, 0, 0};
+  for(std::size_t k = 0; k < 3; ++k) pairs_of_polygon(g.out, k, &per_polygon[k]);
+  try {
+    const auto doc = nlohmann::json::parse(slurp(tmp + "/fc_axis.geojson"));
+    CHECK(doc.at("type") == "FeatureCollection", "FeatureCollection output: type");
+    std::size_t curves[3] = {0, 0, 0}, branches = 0;
+    for(const auto& f : doc.at("features")) {
+      const auto& pr = f.at("properties");
+      const long k = pr.at("polygon").get<long>();
+      CHECK(k >= 0 && k < 3, "FeatureCollection output: polygon " << k);
+      if(k < 0 || k > 2) continue;
+      CHECK(pr.at("name") == (k < 2 ? "A" : "B"), "FeatureCollection output: polygon " << k << " has name " << pr.at("name"));
+      if(k < 2) CHECK(pr.at("pop") == 12, "FeatureCollection output: 'pop' lost");
+      else CHECK(pr.at("tags").at("x").size() == 2, "FeatureCollection output: 'tags' lost");
+      for(const auto& id : pr.at("generators"))
+        CHECK(id.get<std::string>().rfind("p" + std::to_string(k) + ":", 0) == 0, "FeatureCollection output: id " << id);
+      if(pr.at("kind") == "curve") {
+        ++curves[k];
+        CHECK(pr.at("length").is_number() && pr.at("radius").size() == 2, "FeatureCollection output: curve properties");
+      } else {
+        ++branches;
+        CHECK(pr.at("kind") == "branch" && pr.at("radius").is_number(), "FeatureCollection output: branch properties");
+      }
+    }
+    for(std::size_t k = 0; k < 3; ++k)
+      CHECK(curves[k] == per_polygon[k] && curves[k] > 0,
+            "FeatureCollection output: polygon " << k << " has " << curves[k] << " curves, --pairs " << per_polygon[k]);
+    CHECK(branches > 0, "FeatureCollection output: no branch point");
+  } catch(const std::exception& e) {
+    CHECK(false, "FeatureCollection output: " << e.what());
+  }
+
+  // an invalid polygon among several is named; progressive runs need one polygon
+  std::ofstream(tmp + "/bad.wkt") << "MULTIPOLYGON (((0 0, 1 0, 1 1, 0 0)), ((2 2, 4 2, 2 4, 4 4, 2 2)))\n";
+  Result bad = run(tool + " --pairs " + tmp + "/bad.wkt");
+  CHECK(bad.status == 2 && count_lines(bad.err) == 1 &&
+          bad.err.find("polygon 1: self-intersection: ring 0 edge") != std::string::npos,
+        "invalid polygon 1: exit status " << bad.status << ", " << bad.err);
+  Result step = run(tool + " --step 2 " + tmp + "/multi.wkt");
+  CHECK(step.status == 2, "--step on several polygons: exit status " << step.status);
+}
+
 } // namespace
 
 int main(int argc, char** argv)
@@ -326,6 +456,7 @@ int main(int argc, char** argv)
   pairs_against_oracle(data + "/syn_spiral20.wkt", {-1, 50});
   outputs(data);
   analysis_outputs(data);
+  several_polygons(data);
 
   std::system((std::string("rm -rf ") + tmp).c_str());
   return pma_test::report("test_tool");

@@ -20,13 +20,19 @@
 #include <pma_tool/medial_axis_drawing.h>
 
 #ifdef CGAL_LINKED_WITH_TBB
+#include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
 #endif
+
+#include <unistd.h>
 
 #include <chrono>
 #include <cmath>
 #include <functional>
 #include <memory>
+#include <mutex>
+#include <thread>
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
@@ -229,48 +235,168 @@ auto restore_filter_counters(const C& c, int) -> decltype(Traits::filter_statist
 template <class Traits, class C>
 void restore_filter_counters(const C&, long) {}
 
+// One polygon of the input, its axis and what is computed from it.
+template <class Traits>
+struct Polygon_job {
+  typedef typename Traits::Kernel Kernel;
+  typedef CGAL::Medial_axis_2<Kernel> Medial_axis;
+  const pma_tool::Input_polygon<CGAL::Epick::Point_2>* input = nullptr;
+  std::string prefix;                    // "p<k>:" with several polygons, "" with one
+  const Medial_axis* ma = nullptr;       // the axis output (one_shot, or a progressive step)
+  Medial_axis one_shot;
+  CGAL::Progressive_medial_axis_statistics stats;
+  std::size_t steps = 0;
+  std::unique_ptr<CGAL::Medial_axis_significance_2<Kernel> > significance;
+  std::unique_ptr<CGAL::Pruned_medial_axis_2<Kernel> > pruned;
+  std::unique_ptr<CGAL::Medial_axis_centerline_2<Kernel> > center;
+  double prune_seconds = 0;
+  std::string error;                     // the input error of this polygon, if any
+};
+
+// Significance, pruning and centerline of one axis, as the options ask.
+template <class Traits>
+void analyse(const Options& o, Polygon_job<Traits>& job)
+{
+  typedef typename Traits::Kernel Kernel;
+  const auto tp = std::chrono::steady_clock::now();
+  const bool centerline = !o.centerline.empty() || !o.width.empty();
+  if(o.prune || centerline) {
+    job.significance.reset(new CGAL::Medial_axis_significance_2<Kernel>(*job.ma));
+    double et = o.prune_et, ratio = o.prune_ratio;
+    if(!o.prune) {   // the default pruning of a centerline: et = the largest radius
+      et = CGAL::to_double(CGAL::maximum_inscribed_circle_2(*job.ma).radius);
+      ratio = 0;
+    }
+    job.pruned.reset(new CGAL::Pruned_medial_axis_2<Kernel>(CGAL::prune_medial_axis_2(*job.significance, et, ratio)));
+    if(centerline)
+      job.center.reset(new CGAL::Medial_axis_centerline_2<Kernel>(CGAL::medial_axis_centerline_2(*job.pruned, o.extend)));
+  }
+  job.prune_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - tp).count();
+}
+
+// A line of progress on stderr, when it is a terminal and the work has
+// taken more than a second.
+class Progress {
+public:
+  Progress(std::size_t total) : total_(total), start_(std::chrono::steady_clock::now()), tty_(isatty(2) != 0) {}
+  void done_one()
+  {
+    if(!tty_) return;
+    std::lock_guard<std::mutex> lock(mutex_);
+    ++done_;
+    const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+    if(s < 1 || s - last_ < 0.2) return;
+    last_ = s;
+    std::fprintf(stderr, "\rprogressive_medial_axis: %zu of %zu polygons, %.0f s", done_, total_, s);
+    shown_ = true;
+  }
+  ~Progress()
+  {
+    if(shown_) std::fprintf(stderr, "\rprogressive_medial_axis: %zu of %zu polygons, done%20s\n", done_, total_, "");
+  }
+
+private:
+  std::size_t total_, done_ = 0;
+  std::chrono::steady_clock::time_point start_;
+  bool tty_, shown_ = false;
+  double last_ = 0;
+  std::mutex mutex_;
+};
+
 template <class Traits>
 int run(const Options& o)
 {
   typedef CGAL::Progressive_medial_axis_2<Traits> PMA;
   typedef typename PMA::Medial_axis Medial_axis;
   typedef pma_tool::Generator_names<Medial_axis> Names;
+  typedef Polygon_job<Traits> Job;
 
   auto t0 = std::chrono::steady_clock::now();
-  pma_tool::Rings<CGAL::Epick::Point_2> rings;
+  std::vector<pma_tool::Input_polygon<CGAL::Epick::Point_2> > input;
   try {
-    rings = pma_tool::read_polygon_file<CGAL::Epick::Point_2>(o.input);
+    input = pma_tool::read_polygons_file<CGAL::Epick::Point_2>(o.input);
   } catch(const CGAL::Progressive_medial_axes::Input_error& e) {
     std::cerr << o.input << ": " << e.what() << "\n";
     return 2;
   }
   double read_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  const bool multi = input.size() > 1;
+  std::vector<Job> jobs(input.size());
+  for(std::size_t k = 0; k < input.size(); ++k) {
+    jobs[k].input = &input[k];
+    if(multi) jobs[k].prefix = "p" + std::to_string(k) + ":";
+  }
 
   const bool progressive = o.step >= 0 || o.frames > 0;
+  if(multi && (progressive || !o.shape_out.empty()))
+    usage_error("--step, --frames and --shape-out need one polygon; " + o.input + " has " +
+                std::to_string(input.size()));
   std::unique_ptr<PMA> pma;
-  Medial_axis one_shot;
-  CGAL::Progressive_medial_axis_statistics one_shot_stats;
   int threads = 1;
   if(!progressive) {
-    // the one-shot divide and conquer, on o.threads threads
-    auto compute = [&]() { one_shot = CGAL::medial_axis_2(rings, Traits(), CGAL::CHECK_INPUT, &one_shot_stats); };
-    try {
+    // the one-shot divide and conquer of every polygon (in parallel over the
+    // polygons, largest first, and within each), then what the options ask
+    typedef CGAL::Progressive_medial_axes::internal::Thread_counters<Traits> Counters;
+    Counters counters;
+    std::mutex mutex;
+    const std::thread::id caller = std::this_thread::get_id();
+    Progress progress(jobs.size());
+    auto compute_one = [&](Job& job) {
+      counters.run_counted(caller, mutex, [&]() {
+        try {
+          job.one_shot = CGAL::medial_axis_2(job.input->rings, Traits(), CGAL::CHECK_INPUT, &job.stats);
+        } catch(const CGAL::Progressive_medial_axes::Input_error& e) {
+          job.error = e.what();
+          return;
+        }
+        job.ma = &job.one_shot;
+        analyse(o, job);
+        if(o.stats) {   // the step count of region growing (counting steps does not count as work)
+          const auto filters = filter_counters<Traits>(0);
+          job.steps = PMA(job.input->rings, Traits(), CGAL::TRUST_INPUT).number_of_steps();
+          restore_filter_counters<Traits>(filters, 0);
+        }
+      });
+      progress.done_one();
+    };
+    std::vector<std::size_t> order(jobs.size());
+    for(std::size_t k = 0; k < order.size(); ++k) order[k] = k;
+    std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+      auto size = [&](std::size_t k) {
+        std::size_t n = 0;
+        for(const auto& r : input[k].rings) n += r.size();
+        return n;
+      };
+      return size(a) > size(b);
+    });
+    auto compute = [&]() {
 #ifdef CGAL_LINKED_WITH_TBB
-      threads = o.threads > 0 ? o.threads : tbb::info::default_concurrency();
-      // exact kernels run sequentially (see CGAL::medial_axis_2)
-      if(!std::is_floating_point<typename Traits::Kernel::FT>::value) threads = 1;
-      tbb::task_arena arena(threads);
-      arena.execute(compute);
-#else
-      compute();
+      if(multi && std::is_floating_point<typename Traits::Kernel::FT>::value) {
+        tbb::parallel_for(std::size_t(0), order.size(), [&](std::size_t i) { compute_one(jobs[order[i]]); });
+        return;
+      }
 #endif
-    } catch(const CGAL::Progressive_medial_axes::Input_error& e) {
-      std::cerr << o.input << ": " << e.what() << "\n";
-      return 2;
-    }
+      for(std::size_t k : order) compute_one(jobs[k]);
+    };
+#ifdef CGAL_LINKED_WITH_TBB
+    threads = o.threads > 0 ? o.threads : tbb::info::default_concurrency();
+    // exact kernels run sequentially (see CGAL::medial_axis_2)
+    if(!std::is_floating_point<typename Traits::Kernel::FT>::value) threads = 1;
+    tbb::task_arena arena(threads);
+    arena.execute(compute);
+#else
+    compute();
+#endif
+    if constexpr(!std::is_empty<Counters>::value) counters.gather();
+    for(const Job& job : jobs)
+      if(!job.error.empty()) {
+        std::cerr << o.input << ": " << (multi ? "polygon " + job.prefix.substr(1, job.prefix.size() - 2) + ": " : "")
+                  << job.error << "\n";
+        return 2;
+      }
   } else {
     try {
-      pma.reset(new PMA(rings));
+      pma.reset(new PMA(input[0].rings));
     } catch(const CGAL::Progressive_medial_axes::Input_error& e) {
       std::cerr << o.input << ": " << e.what() << "\n";
       return 2;
@@ -304,17 +430,19 @@ int run(const Options& o)
       pma->refine();
       if(!frame_steps.empty()) draw_frames();
     }
+    Job& job = jobs[0];
+    job.ma = &pma->medial_axis();
+    job.stats = pma->statistics();
+    job.steps = pma->number_of_steps();
+    analyse(o, job);
   }
   const double total_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 
-  const Medial_axis& ma = progressive ? pma->medial_axis() : one_shot;
   const bool shape_mode = (o.step >= 0);
-  Names names(ma, shape_mode ? Names::SHAPE : Names::INPUT);
-
   if(!o.shape_out.empty()) {
+    const Medial_axis& ma = *jobs[0].ma;
     std::ofstream f = open_out(o.shape_out);
-    typename Names::Mode mode = Names::SHAPE;
-    Names shape_names(ma, mode);
+    Names shape_names(ma, Names::SHAPE);
     std::vector<std::vector<CGAL::Epick::Point_2> > out;
     for(const auto& r : shape_names.rings()) {
       out.emplace_back();
@@ -326,101 +454,114 @@ int run(const Options& o)
     pma_tool::write_wkt_polygon(f, out);
     f << "\n";
   }
-  // significance, pruning and centerline (timed together: time_prune)
-  typedef typename Traits::Kernel Kernel;
-  const auto tp = std::chrono::steady_clock::now();
-  const bool centerline = !o.centerline.empty() || !o.width.empty();
-  std::unique_ptr<CGAL::Medial_axis_significance_2<Kernel> > significance;
-  std::unique_ptr<CGAL::Pruned_medial_axis_2<Kernel> > pruned;
-  std::unique_ptr<CGAL::Medial_axis_centerline_2<Kernel> > center;
-  if(o.prune || centerline) {
-    significance.reset(new CGAL::Medial_axis_significance_2<Kernel>(ma));
 
-    double et = o.prune_et, ratio = o.prune_ratio;
-    if(!o.prune) {   // the default pruning of a centerline: et = the largest radius
-      et = CGAL::to_double(CGAL::maximum_inscribed_circle_2(ma).radius);
-      ratio = 0;
-    }
-    pruned.reset(new CGAL::Pruned_medial_axis_2<Kernel>(CGAL::prune_medial_axis_2(*significance, et, ratio)));
-    if(centerline) center.reset(new CGAL::Medial_axis_centerline_2<Kernel>(CGAL::medial_axis_centerline_2(*pruned, o.extend)));
-  }
-  const double prune_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - tp).count();
+  // the outputs, polygon after polygon, with the ids prefixed by p<k>: when
+  // there are several
   typedef typename Medial_axis::Vertex_handle Vertex;
-  const auto parts = o.prune ? pma_tool::axis_parts(*pruned) : pma_tool::axis_parts(ma);
-  std::function<bool(const Vertex&)> keep;
-  if(o.prune) keep = [&](const Vertex& v) { return pruned->is_kept(v); };
+  std::vector<pma_tool::Axis_layer<Medial_axis> > layers;
+  for(std::size_t k = 0; k < jobs.size(); ++k) {
+    const Job& job = jobs[k];
+    pma_tool::Axis_layer<Medial_axis> layer;
+    layer.ma = job.ma;
+    layer.parts = o.prune ? pma_tool::axis_parts(*job.pruned) : pma_tool::axis_parts(*job.ma);
+    if(o.prune) layer.keep = [p = job.pruned.get()](const Vertex& v) { return p->is_kept(v); };
+    layer.names = pma_tool::prefixed_names(Names(*job.ma, shape_mode ? Names::SHAPE : Names::INPUT), job.prefix);
+    layer.properties = job.input->properties;
+    layer.polygon = multi ? long(k) : -1;
+    layers.push_back(std::move(layer));
+  }
 
   if(o.pairs)
-    pma_tool::write_pairs(std::cout, pma_tool::named_curves(parts, names));
+    for(const auto& l : layers) pma_tool::write_pairs(std::cout, pma_tool::named_curves(l.parts, l.names));
   if(o.branches)
-    pma_tool::write_branches(std::cout, pma_tool::named_branches(ma, names, 1e-12 * pma_tool::bbox_diagonal(ma), keep));
-  if(o.inscribed_circle) {
-    const auto c = CGAL::maximum_inscribed_circle_2(ma);
-    const auto p = Medial_axis::to_xy(c.center);
-    std::printf("circle %.17g %.17g %.17g\n", p.first, p.second, CGAL::to_double(c.radius));
-  }
+    for(const auto& l : layers)
+      pma_tool::write_branches(std::cout,
+                               pma_tool::named_branches(*l.ma, l.names, 1e-12 * pma_tool::bbox_diagonal(*l.ma), l.keep));
+  if(o.inscribed_circle)
+    for(const Job& job : jobs) {
+      const auto c = CGAL::maximum_inscribed_circle_2(*job.ma);
+      const auto p = Medial_axis::to_xy(c.center);
+      std::printf("circle %s%s%.17g %.17g %.17g\n", job.prefix.substr(0, job.prefix.size() ? job.prefix.size() - 1 : 0).c_str(),
+                  multi ? " " : "", p.first, p.second, CGAL::to_double(c.radius));
+    }
   if(!o.svg.empty()) {
     std::ofstream f = open_out(o.svg);
-    pma_tool::write_svg(f, ma, parts, keep, "");
+    pma_tool::write_svg(f, layers, "");
   }
   if(!o.geojson.empty()) {
     std::ofstream f = open_out(o.geojson);
-    pma_tool::write_geojson(f, ma, parts, keep, names, o.tolerance);
+    pma_tool::write_geojson(f, layers, o.tolerance);
   }
   if(!o.wkt_out.empty()) {
     std::ofstream f = open_out(o.wkt_out);
-    pma_tool::write_wkt_axis(f, ma, parts, o.tolerance);
+    pma_tool::write_wkt_axis(f, layers, o.tolerance);
   }
   if(!o.centerline.empty()) {
     std::ofstream f = open_out(o.centerline);
-    const double tol = o.tolerance > 0 ? o.tolerance : 1e-6 * pma_tool::shape_box(ma).diagonal();
-    const auto lines = center->polylines(tol);
-    const bool single = center->paths().size() == 1 && !center->paths()[0].closed;
-    pma_tool::write_wkt_lines(f, lines, !single);
+    std::vector<std::vector<std::pair<double, double> > > lines;
+    bool single = true;
+    for(const Job& job : jobs) {
+      const double tol = o.tolerance > 0 ? o.tolerance : 1e-6 * pma_tool::shape_box(*job.ma).diagonal();
+      for(auto& l : job.center->polylines(tol)) lines.push_back(std::move(l));
+      single = single && !(job.center->paths().size() == 1 && job.center->paths()[0].closed);
+    }
+    pma_tool::write_wkt_lines(f, lines, !(single && lines.size() == 1));
   }
   if(!o.width.empty()) {
     std::ofstream f = open_out(o.width);
-    f << "s,x,y,width\n";
-    for(const auto& w : center->width_profile())
-      f << pma_tool::format_double(w.s) << ',' << pma_tool::format_double(w.x) << ',' << pma_tool::format_double(w.y)
-        << ',' << pma_tool::format_double(w.width) << '\n';
+    f << (multi ? "polygon,s,x,y,width\n" : "s,x,y,width\n");
+    for(std::size_t k = 0; k < jobs.size(); ++k)
+      for(const auto& w : jobs[k].center->width_profile()) {
+        if(multi) f << k << ',';
+        f << pma_tool::format_double(w.s) << ',' << pma_tool::format_double(w.x) << ','
+          << pma_tool::format_double(w.y) << ',' << pma_tool::format_double(w.width) << '\n';
+      }
   }
   if(o.stats) {
-    const CGAL::Progressive_medial_axis_statistics& s = progressive ? pma->statistics() : one_shot_stats;
-    std::size_t nb = 0;
-    for(const auto& v : ma.vertices())
-      if(v.kind() == Medial_axis::BRANCH_POINT) ++nb;
-    // the step count of region growing (in one-shot mode, counted now: all done)
-    std::size_t steps = 0;
-    if(progressive) {
-      steps = pma->number_of_steps();
-    } else {
-      const auto filters = filter_counters<Traits>(0);   // counting steps does not count as work
-      steps = PMA(rings, Traits(), CGAL::TRUST_INPUT).number_of_steps();
-      restore_filter_counters<Traits>(filters, 0);
+    CGAL::Progressive_medial_axis_statistics s;
+    std::size_t nb = 0, curves = 0, steps = 0, pruned_curves = 0;
+    double centerline_length = 0, prune_seconds = 0;
+    for(const Job& job : jobs) {
+      const auto& t = job.stats;
+      s.input_vertices += t.input_vertices;
+      s.holes += t.holes;
+      s.triangles += t.triangles;
+      s.validation_seconds += t.validation_seconds;
+      s.triangulation_seconds += t.triangulation_seconds;
+      s.merge_seconds += t.merge_seconds;
+      s.switches += t.switches;
+      s.vanishings += t.vanishings;
+      s.anomalies += t.anomalies;
+      s.max_queue = std::max(s.max_queue, t.max_queue);
+      s.redone_merges += t.redone_merges;
+      steps += job.steps;
+      curves += job.ma->number_of_edges();
+      for(const auto& v : job.ma->vertices())
+        if(v.kind() == Medial_axis::BRANCH_POINT) ++nb;
+      if(job.pruned) pruned_curves += job.pruned->number_of_pruned_curves();
+      if(job.center) centerline_length += job.center->length();
+      prune_seconds += job.prune_seconds;
     }
     std::printf("input_vertices %zu\nholes %zu\ntriangles %zu\nsteps %zu\nsteps_done %zu\n",
                 s.input_vertices, s.holes, s.triangles, steps, progressive ? pma->current_step() : steps);
     std::printf("mode %s\nthreads %d\ntime_total %.6f\n", progressive ? "region" : "oneshot", threads, total_seconds);
+    std::printf("polygons %zu\n", jobs.size());
     std::printf("traits %s\n", o.traits.c_str());
     std::printf("time_read %.6f\ntime_validate %.6f\ntime_triangulate %.6f\ntime_merge %.6f\n",
                 read_seconds, s.validation_seconds, s.triangulation_seconds, s.merge_seconds);
     std::printf("switch_events %zu\nvanishing_events %zu\nanomalies %zu\nmax_n_v %zu\n",
                 s.switches, s.vanishings, s.anomalies, s.max_queue);
     std::printf("redone_merges %zu\n", s.redone_merges);
-    std::printf("medial_curves %zu\nbranch_vertices %zu\n", ma.number_of_edges(), nb);
+    std::printf("medial_curves %zu\nbranch_vertices %zu\n", curves, nb);
     print_filter_statistics(Traits(), 0);
-    if(o.prune) std::printf("pruned_curves %zu\n", pruned->number_of_pruned_curves());
-    if(center) std::printf("centerline_length %.17g\n", center->length());
-    if(pruned) std::printf("time_prune %.6f\n", prune_seconds);
+    if(o.prune) std::printf("pruned_curves %zu\n", pruned_curves);
+    if(jobs[0].center) std::printf("centerline_length %.17g\n", centerline_length);
+    if(jobs[0].pruned) std::printf("time_prune %.6f\n", prune_seconds);
   }
   // The process ends right after the output (main() calls std::_Exit):
-  // the axis is left to the system rather than freed record by record.
-  (void)significance.release();
-  (void)pruned.release();
-  (void)center.release();
+  // the axes are left to the system rather than freed record by record.
+  (void)new std::vector<Job>(std::move(jobs));
   if(pma) (void)pma.release();
-  else (void)new Medial_axis(std::move(one_shot));
   return 0;
 }
 

@@ -9,6 +9,8 @@
 
 #include <pma_tool/medial_axis_io.h>
 
+#include <nlohmann/json.hpp>
+
 #include <algorithm>
 #include <functional>
 #include <cmath>
@@ -36,24 +38,28 @@ inline std::string xml_escape(const std::string& s)
 } // namespace internal
 
 /*!
-Draws the shape of `ma` and the curves `parts` of its medial axis (all of
+Draws the shapes of the layers and the curves of their medial axes (all of
 them, or the kept parts of a pruned axis) as an SVG picture of about `width`
-pixels: the shape filled, straight curves in blue (`L`), parabolic arcs in
+pixels: the shapes filled, straight curves in blue (`L`), parabolic arcs in
 red, each as the quadratic Bezier curve that is that arc (`Q`), and the
-branch points that `keep` keeps (all if empty) as dots.  `title` is written
-in a corner.  With `show_input`, the outline of the whole input polygon is
-drawn in grey behind (useful for the steps of a progressive computation).
+branch points that each layer keeps as dots.  `title` is written in a
+corner.  With `show_input`, the outline of the whole input polygon is drawn
+in grey behind (useful for the steps of a progressive computation).
 */
 template <class Medial_axis>
-void write_svg(std::ostream& out, const Medial_axis& ma, const std::vector<Axis_part<Medial_axis> >& parts,
-               const std::function<bool(const typename Medial_axis::Vertex_handle&)>& keep, const std::string& title,
+void write_svg(std::ostream& out, const std::vector<Axis_layer<Medial_axis> >& layers, const std::string& title,
                double width = 1000, bool show_input = false)
 {
-  Box box = shape_box(ma);
-  if(show_input) {
-    const Box in = input_box(ma);
-    box.add(in.x0, in.y0);
-    box.add(in.x1, in.y1);
+  Box box;
+  for(const auto& l : layers) {
+    const Box b = shape_box(*l.ma);
+    box.add(b.x0, b.y0);
+    box.add(b.x1, b.y1);
+    if(show_input) {
+      const Box in = input_box(*l.ma);
+      box.add(in.x0, in.y0);
+      box.add(in.x1, in.y1);
+    }
   }
   double w = box.x1 - box.x0, h = box.y1 - box.y0;
   if(!(w > 0)) w = 1;
@@ -68,7 +74,7 @@ void write_svg(std::ostream& out, const Medial_axis& ma, const std::vector<Axis_
       << "\" viewBox=\"0 0 " << W << ' ' << H << "\">\n";
   out << "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
   // a filled path of closed rings of polygon vertices
-  auto rings_path = [&](const auto& rings, const char* style) {
+  auto rings_path = [&](const Medial_axis& ma, const auto& rings, const char* style) {
     out << "<path " << style << " fill-rule=\"evenodd\" d=\"";
     for(const auto& c : rings) {
       for(std::size_t i = 0; i < c.size(); ++i) {
@@ -80,42 +86,47 @@ void write_svg(std::ostream& out, const Medial_axis& ma, const std::vector<Axis_
     }
     out << "\"/>\n";
   };
-  if(show_input) {
-    std::vector<std::vector<typename Medial_axis::Input_vertex> > input(ma.number_of_input_rings());
-    for(std::size_t r = 0; r < input.size(); ++r)
-      for(std::size_t i = 0; i < ma.input_ring_size(r); ++i) {
-        typename Medial_axis::Input_vertex v;
-        v.ring = int(r);
-        v.index = int(i);
-        input[r].push_back(v);
-      }
-    rings_path(input, "fill=\"#f4f4f4\" stroke=\"#b0b0b0\" stroke-width=\"0.6\"");
+  for(const auto& l : layers) {
+    const Medial_axis& ma = *l.ma;
+    if(show_input) {
+      std::vector<std::vector<typename Medial_axis::Input_vertex> > input(ma.number_of_input_rings());
+      for(std::size_t r = 0; r < input.size(); ++r)
+        for(std::size_t i = 0; i < ma.input_ring_size(r); ++i) {
+          typename Medial_axis::Input_vertex v;
+          v.ring = int(r);
+          v.index = int(i);
+          input[r].push_back(v);
+        }
+      rings_path(ma, input, "fill=\"#f4f4f4\" stroke=\"#b0b0b0\" stroke-width=\"0.6\"");
+    }
+    rings_path(ma, ma.shape_rings(), "fill=\"#e8eef7\" stroke=\"#203040\" stroke-width=\"0.8\"");
   }
-  rings_path(ma.shape_rings(), "fill=\"#e8eef7\" stroke=\"#203040\" stroke-width=\"0.8\"");
   for(int kind = 0; kind < 2; ++kind) {
     out << "<path fill=\"none\" stroke=\"" << (kind == 0 ? "#1f5fbf" : "#c0392b")
         << "\" stroke-width=\"1\" d=\"";
-    for(const auto& p : parts) {
-      const bool parabola = p.h.curve_kind() == Medial_axis::PARABOLIC_ARC;
-      if(parabola != (kind == 1)) continue;
-      const auto b = p.bezier();
-      if(parabola)
-        std::snprintf(buf, sizeof(buf), "M%.2f %.2fQ%.2f %.2f %.2f %.2f", X(b[0].first), Y(b[0].second),
-                      X(b[1].first), Y(b[1].second), X(b[2].first), Y(b[2].second));
-      else
-        std::snprintf(buf, sizeof(buf), "M%.2f %.2fL%.2f %.2f", X(b[0].first), Y(b[0].second), X(b[2].first),
-                      Y(b[2].second));
-      out << buf;
-    }
+    for(const auto& l : layers)
+      for(const auto& p : l.parts) {
+        const bool parabola = p.h.curve_kind() == Medial_axis::PARABOLIC_ARC;
+        if(parabola != (kind == 1)) continue;
+        const auto b = p.bezier();
+        if(parabola)
+          std::snprintf(buf, sizeof(buf), "M%.2f %.2fQ%.2f %.2f %.2f %.2f", X(b[0].first), Y(b[0].second),
+                        X(b[1].first), Y(b[1].second), X(b[2].first), Y(b[2].second));
+        else
+          std::snprintf(buf, sizeof(buf), "M%.2f %.2fL%.2f %.2f", X(b[0].first), Y(b[0].second), X(b[2].first),
+                        Y(b[2].second));
+        out << buf;
+      }
     out << "\"/>\n";
   }
   out << "<g fill=\"#202020\">\n";
-  for(const auto& v : ma.vertices()) {
-    if(v.kind() != Medial_axis::BRANCH_POINT || (keep && !keep(v))) continue;
-    auto p = Medial_axis::to_xy(v.point());
-    std::snprintf(buf, sizeof(buf), "<circle cx=\"%.2f\" cy=\"%.2f\" r=\"1.2\"/>\n", X(p.first), Y(p.second));
-    out << buf;
-  }
+  for(const auto& l : layers)
+    for(const auto& v : l.ma->vertices()) {
+      if(v.kind() != Medial_axis::BRANCH_POINT || (l.keep && !l.keep(v))) continue;
+      auto p = Medial_axis::to_xy(v.point());
+      std::snprintf(buf, sizeof(buf), "<circle cx=\"%.2f\" cy=\"%.2f\" r=\"1.2\"/>\n", X(p.first), Y(p.second));
+      out << buf;
+    }
   out << "</g>\n";
   if(!title.empty())
     out << "<text x=\"" << margin << "\" y=\"" << H - margin / 2
@@ -129,55 +140,71 @@ template <class Medial_axis>
 void write_svg(std::ostream& out, const Medial_axis& ma, const std::string& title, double width = 1000,
                bool show_input = false)
 {
-  write_svg(out, ma, axis_parts(ma), {}, title, width, show_input);
+  std::vector<Axis_layer<Medial_axis> > layers(1);
+  layers[0].ma = &ma;
+  layers[0].parts = axis_parts(ma);
+  write_svg(out, layers, title, width, show_input);
 }
 
 /*!
-Writes the curves `parts` of a medial axis as a GeoJSON FeatureCollection:
-one LineString per curve (properties: the two generator ids, `line` or
-`parabola`, the length; for a pruned axis, the erosion thickness at both
-ends, `et`, null where infinite) sampled within `tolerance` (default 1e-6
-of the shape's diagonal), and one Point per branch point that `keep` keeps
-(properties: generator ids, radius).
+Writes the curves of the layers' medial axes as a GeoJSON FeatureCollection
+(RFC 7946): one LineString per curve, sampled within `tolerance` (default
+1e-6 of the shape's diagonal), and one Point per branch point the layer
+keeps.  Every feature carries the properties of the input feature its
+polygon comes from, then its own (which replace input properties of the same
+name): `kind` (`curve` or `branch`), `generators` (ids), and for a curve
+`curve` (`line` or `parabola`), `length`, `radius` (at both ends) and, for a
+pruned axis, `et` (the erosion thickness at both ends, null where infinite);
+for a branch point `radius`; `polygon` (the polygon's index) when the input
+has several.
 */
-template <class Medial_axis, class Names>
-void write_geojson(std::ostream& out, const Medial_axis& ma, const std::vector<Axis_part<Medial_axis> >& parts,
-                   const std::function<bool(const typename Medial_axis::Vertex_handle&)>& keep, const Names& names,
-                   double tolerance = -1)
+template <class Medial_axis>
+void write_geojson(std::ostream& out, const std::vector<Axis_layer<Medial_axis> >& layers, double tolerance = -1)
 {
-  if(tolerance <= 0) tolerance = 1e-6 * shape_box(ma).diagonal();
   auto number = [](double v) { return std::isfinite(v) ? format_double(v) : std::string("null"); };
   out << "{\"type\":\"FeatureCollection\",\"features\":[\n";
   bool first = true;
-  for(const auto& p : parts) {
-    std::string a = names(p.h.first_generator()), b = names(p.h.second_generator());
-    if(b < a) std::swap(a, b);
-    out << (first ? "" : ",\n") << "{\"type\":\"Feature\",\"properties\":{\"generators\":[\"" << a << "\",\"" << b
-        << "\"],\"curve\":\"" << (p.h.curve_kind() == Medial_axis::PARABOLIC_ARC ? "parabola" : "line")
-        << "\",\"length\":" << format_double(p.length());
-    if(p.with_et) out << ",\"et\":[" << number(p.et_begin) << ',' << number(p.et_end) << ']';
-    out << "},\"geometry\":{\"type\":\"LineString\",\"coordinates\":[";
-    auto pl = p.polyline(tolerance);
-    for(std::size_t i = 0; i < pl.size(); ++i)
-      out << (i ? "," : "") << '[' << format_double(pl[i].first) << ',' << format_double(pl[i].second) << ']';
-    out << "]}}";
-    first = false;
-  }
-  for(const auto& br : named_branches(ma, names, 1e-12 * shape_box(ma).diagonal(), keep)) {
-    out << (first ? "" : ",\n") << "{\"type\":\"Feature\",\"properties\":{\"generators\":[";
-    for(std::size_t i = 0; i < br.generators.size(); ++i)
-      out << (i ? "," : "") << '"' << br.generators[i] << '"';
-    out << "],\"radius\":" << format_double(br.r) << "},\"geometry\":{\"type\":\"Point\",\"coordinates\":["
-        << format_double(br.x) << ',' << format_double(br.y) << "]}}";
-    first = false;
+  for(const auto& l : layers) {
+    const Medial_axis& ma = *l.ma;
+    const double tol = tolerance > 0 ? tolerance : 1e-6 * shape_box(ma).diagonal();
+    // the input feature's properties without the names of ours, as members to prepend
+    std::string inherited;
+    if(!l.properties.empty()) {
+      nlohmann::ordered_json props = nlohmann::ordered_json::parse(l.properties);
+      for(const char* own : {"kind", "generators", "curve", "length", "radius", "et", "polygon"}) props.erase(own);
+      if(!props.empty()) {
+        inherited = props.dump();
+        inherited = inherited.substr(1, inherited.size() - 2) + ",";
+      }
+    }
+    if(l.polygon >= 0) inherited += "\"polygon\":" + std::to_string(l.polygon) + ",";
+    for(const auto& p : l.parts) {
+      std::string a = l.names(p.h.first_generator()), b = l.names(p.h.second_generator());
+      if(b < a) std::swap(a, b);
+      out << (first ? "" : ",\n") << "{\"type\":\"Feature\",\"properties\":{" << inherited
+          << "\"kind\":\"curve\",\"generators\":[\"" << a << "\",\"" << b << "\"],\"curve\":\""
+          << (p.h.curve_kind() == Medial_axis::PARABOLIC_ARC ? "parabola" : "line")
+          << "\",\"length\":" << format_double(p.length()) << ",\"radius\":[" << number(p.h.radius_at(p.begin))
+          << ',' << number(p.h.radius_at(p.whole ? p.h.length() : p.end)) << ']';
+      if(p.with_et) out << ",\"et\":[" << number(p.et_begin) << ',' << number(p.et_end) << ']';
+      out << "},\"geometry\":{\"type\":\"LineString\",\"coordinates\":[";
+      auto pl = p.polyline(tol);
+      for(std::size_t i = 0; i < pl.size(); ++i)
+        out << (i ? "," : "") << '[' << format_double(pl[i].first) << ',' << format_double(pl[i].second) << ']';
+      out << "]}}";
+      first = false;
+    }
+    for(const auto& br : named_branches(ma, l.names, 1e-12 * shape_box(ma).diagonal(), l.keep)) {
+      out << (first ? "" : ",\n") << "{\"type\":\"Feature\",\"properties\":{" << inherited
+          << "\"kind\":\"branch\",\"generators\":[";
+      for(std::size_t i = 0; i < br.generators.size(); ++i)
+        out << (i ? "," : "") << '"' << br.generators[i] << '"';
+      out << "],\"radius\":" << format_double(br.r) << "},\"geometry\":{\"type\":\"Point\",\"coordinates\":["
+          << format_double(br.x) << ',' << format_double(br.y) << "]}}";
+      first = false;
+    }
   }
   out << "\n]}\n";
-}
-
-template <class Medial_axis, class Names>
-void write_geojson(std::ostream& out, const Medial_axis& ma, const Names& names, double tolerance = -1)
-{
-  write_geojson(out, ma, axis_parts(ma), {}, names, tolerance);
 }
 
 /// Writes polylines as one WKT MULTILINESTRING.
@@ -202,23 +229,18 @@ inline void write_wkt_lines(std::ostream& out, const std::vector<std::vector<std
 }
 
 /*!
-Writes the curves `parts` of a medial axis as one WKT MULTILINESTRING,
-sampled within `tolerance` (default 1e-6 of the shape's diagonal).
+Writes the curves of the layers' medial axes as one WKT MULTILINESTRING,
+sampled within `tolerance` (default 1e-6 of each shape's diagonal).
 */
 template <class Medial_axis>
-void write_wkt_axis(std::ostream& out, const Medial_axis& ma, const std::vector<Axis_part<Medial_axis> >& parts,
-                    double tolerance = -1)
+void write_wkt_axis(std::ostream& out, const std::vector<Axis_layer<Medial_axis> >& layers, double tolerance = -1)
 {
-  if(tolerance <= 0) tolerance = 1e-6 * shape_box(ma).diagonal();
   std::vector<std::vector<std::pair<double, double> > > lines;
-  for(const auto& p : parts) lines.push_back(p.polyline(tolerance));
+  for(const auto& l : layers) {
+    const double tol = tolerance > 0 ? tolerance : 1e-6 * shape_box(*l.ma).diagonal();
+    for(const auto& p : l.parts) lines.push_back(p.polyline(tol));
+  }
   write_wkt_lines(out, lines);
-}
-
-template <class Medial_axis>
-void write_wkt_axis(std::ostream& out, const Medial_axis& ma, double tolerance = -1)
-{
-  write_wkt_axis(out, ma, axis_parts(ma), tolerance);
 }
 
 } // namespace pma_tool

@@ -122,6 +122,27 @@ std::vector<Axis_part<CGAL::Medial_axis_2<K> > > axis_parts(const CGAL::Pruned_m
   return out;
 }
 
+/// The axis of one polygon of the input, as the outputs show it: its curves
+/// (or their kept parts), the branch points it keeps (all if `keep` is
+/// empty), the generators' names, the properties of the input feature (JSON
+/// object text, or empty) and the polygon's index (-1 when the input has one).
+template <class Medial_axis>
+struct Axis_layer {
+  const Medial_axis* ma = nullptr;
+  std::vector<Axis_part<Medial_axis> > parts;
+  std::function<bool(const typename Medial_axis::Vertex_handle&)> keep;
+  std::function<std::string(const typename Medial_axis::Face_handle&)> names;
+  std::string properties;
+  long polygon = -1;
+};
+
+/// The names `names` with `prefix` in front (`p<k>:` for the k-th polygon of several).
+template <class Names>
+auto prefixed_names(Names names, std::string prefix)
+{
+  return [names = std::move(names), prefix = std::move(prefix)](const auto& g) { return prefix + names(g); };
+}
+
 /// One medial curve, named.
 struct Named_curve {
   std::string a, b;   // a < b

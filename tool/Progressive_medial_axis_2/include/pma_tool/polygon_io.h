@@ -13,6 +13,8 @@
 #include <CGAL/assertions.h>
 #include <CGAL/number_utils.h>
 
+#include <nlohmann/json.hpp>
+
 #include <cerrno>
 #include <charconv>
 #include <cmath>
@@ -34,6 +36,15 @@ namespace pma_tool {
 
 using CGAL::Progressive_medial_axes::Input_error;
 using CGAL::Progressive_medial_axes::Rings;
+
+/// One polygon of the input, with the properties of the GeoJSON feature it comes
+/// from: their JSON text (an object, members in input order), empty if there are none.
+template <class Point_2>
+struct Input_polygon
+{
+  Rings<Point_2> rings;
+  std::string properties;
+};
 
 namespace internal {
 
@@ -158,23 +169,19 @@ inline bool convert_decimal(const char* begin, const char* end, double& value)
 
 /// Scans a number at `p` (not past `e`): `[+-]? (digits [. digits] | . digits)
 /// ([eE] [+-]? digits)?`, or `[+-]? (nan | inf | infinity)` (any case) which gives a
-/// non-finite result, as do numbers too large for a double. With `json`, the JSON
-/// grammar is used instead (no leading '+', no leading zeros, digits on both sides of
-/// the point) and the non-finite words are `NaN`, `Infinity` and `-Infinity`.
-inline Scanned_number scan_number(const char* p, const char* e, bool json)
+/// non-finite result, as do numbers too large for a double.
+inline Scanned_number scan_number(const char* p, const char* e)
 {
   Scanned_number result;
   const char* start = p;
-  if(p != e && (*p == '-' || (*p == '+' && !json)))
+  if(p != e && (*p == '-' || *p == '+'))
     ++p;
   // Non-finite words.
   if(p != e && is_alpha(*p)) {
     const char* w = p;
     while(w != e && is_alpha(*w))
       ++w;
-    if(json ? (std::string(p, w) == "Infinity" || (p == start && std::string(p, w) == "NaN"))
-            : (equals_word(p, w, "NAN") || equals_word(p, w, "INF") ||
-               equals_word(p, w, "INFINITY"))) {
+    if(equals_word(p, w, "NAN") || equals_word(p, w, "INF") || equals_word(p, w, "INFINITY")) {
       result.status = Scanned_number::NON_FINITE;
       result.end = w;
     }
@@ -184,16 +191,12 @@ inline Scanned_number scan_number(const char* p, const char* e, bool json)
   while(p != e && is_digit(*p))
     ++p;
   std::size_t integer_digits = static_cast<std::size_t>(p - digits);
-  if(json && (integer_digits == 0 || (integer_digits > 1 && *digits == '0')))
-    return result;
   std::size_t fraction_digits = 0;
   if(p != e && *p == '.') {
     const char* f = ++p;
     while(p != e && is_digit(*p))
       ++p;
     fraction_digits = static_cast<std::size_t>(p - f);
-    if(json && fraction_digits == 0)
-      return result;
   }
   if(integer_digits + fraction_digits == 0)
     return result;
@@ -206,8 +209,6 @@ inline Scanned_number scan_number(const char* p, const char* e, bool json)
       ++x;
     if(x != d) // as strtod: an exponent without digits is not part of the number
       p = x;
-    else if(json)
-      return result;
   }
   result.end = p;
   result.status = convert_decimal(start, p, result.value) ? Scanned_number::FINITE
@@ -242,67 +243,86 @@ void finish_ring(std::vector<Point_2>& ring, const std::vector<double>& xy, std:
 
 // ------------------------------------------------------------------ WKT
 
-/// A recursive-descent WKT reader over a buffer, accepting
-/// `POLYGON ((x y, ...), ...)` and a `MULTIPOLYGON` holding exactly one polygon.
+/// A recursive-descent WKT reader over a buffer, accepting `POLYGON`, `MULTIPOLYGON`
+/// and `GEOMETRYCOLLECTION`s of them (nested), each possibly `EMPTY`.
 template <class Point_2>
 class Wkt_polygon_reader
 {
 public:
   Wkt_polygon_reader(const char* begin, const char* end) : m_begin(begin), m_p(begin), m_end(end) {}
 
-  Rings<Point_2> read()
+  std::vector<Input_polygon<Point_2> > read()
   {
     if(m_end - m_p >= 3 && std::memcmp(m_p, "\xEF\xBB\xBF", 3) == 0) // UTF-8 byte order mark
       m_p += 3;
     skip_space();
     if(m_p == m_end)
       throw Input_error("empty input: no polygon found");
+    geometry(0);
+    expect_end();
+    if(m_out.empty())
+      throw Input_error("empty polygon");
+    return std::move(m_out);
+  }
+
+private:
+  // POLYGON ... | MULTIPOLYGON ... | GEOMETRYCOLLECTION (geometry, ...), each possibly EMPTY
+  void geometry(int depth)
+  {
+    skip_space();
     const char* kw_begin = m_p;
     std::string keyword = read_word();
     if(keyword.empty())
       error(kw_begin, "expected 'POLYGON'");
-    bool multi = false;
-    if(keyword == "MULTIPOLYGON")
-      multi = true;
-    else if(keyword == "POLYGONZ" || keyword == "POLYGONM" || keyword == "POLYGONZM" ||
-            keyword == "MULTIPOLYGONZ" || keyword == "MULTIPOLYGONM" || keyword == "MULTIPOLYGONZM")
-      throw Input_error("only 2D coordinates are supported");
-    else if(keyword != "POLYGON")
+    const std::size_t n = keyword.size();
+    for(const char* dim : {"ZM", "Z", "M"}) {
+      const std::size_t d = std::strlen(dim);
+      if(n > d && keyword.compare(n - d, d, dim) == 0 &&
+         (keyword.compare(0, n - d, "POLYGON") == 0 || keyword.compare(0, n - d, "MULTIPOLYGON") == 0 ||
+          keyword.compare(0, n - d, "GEOMETRYCOLLECTION") == 0))
+        throw Input_error("only 2D coordinates are supported");
+    }
+    if(keyword != "POLYGON" && keyword != "MULTIPOLYGON" && keyword != "GEOMETRYCOLLECTION")
       throw Input_error("not a polygon: found " + keyword);
-
+    if(depth > 64)
+      error(kw_begin, "collections nested too deep");
     skip_space();
     if(m_p != m_end && is_alpha(*m_p)) {
       const char* w = m_p;
       std::string tag = read_word();
       if(tag == "Z" || tag == "M" || tag == "ZM")
         throw Input_error("only 2D coordinates are supported");
-      if(tag == "EMPTY") {
-        expect_end();
-        throw Input_error("empty polygon");
-      }
+      if(tag == "EMPTY")
+        return;
       error(w, "expected '(' or 'EMPTY'");
     }
-
-    Rings<Point_2> rings;
-    if(multi) {
-      expect('(', "expected '(' or 'EMPTY'");
-      skip_space();
-      if(m_p != m_end && is_alpha(*m_p)) { // MULTIPOLYGON (EMPTY)
-        const char* w = m_p;
-        if(read_word() == "EMPTY")
-          throw Input_error("empty polygon");
-        error(w, "expected '('");
-      }
-      read_polygon_text(rings);
-      skip_space();
-      if(m_p != m_end && *m_p == ',')
-        throw Input_error("not a polygon: found MULTIPOLYGON with more than one polygon");
-      expect(')', "expected ',' or ')'");
-    } else {
-      read_polygon_text(rings);
+    if(keyword == "POLYGON") {
+      read_polygon_text();
+      return;
     }
-    expect_end();
-    return rings;
+    m_multi = true;
+    expect('(', "expected '(' or 'EMPTY'");
+    for(;;) {
+      if(keyword == "GEOMETRYCOLLECTION") {
+        geometry(depth + 1);
+      } else {
+        skip_space();
+        if(m_p != m_end && is_alpha(*m_p)) { // MULTIPOLYGON (EMPTY, ...)
+          const char* w = m_p;
+          if(read_word() != "EMPTY")
+            error(w, "expected '('");
+        } else {
+          read_polygon_text();
+        }
+      }
+      skip_space();
+      if(m_p != m_end && *m_p == ',') {
+        ++m_p;
+        continue;
+      }
+      expect(')', "expected ',' or ')'");
+      return;
+    }
   }
 
 private:
@@ -340,21 +360,31 @@ private:
       error(m_p, "unexpected text after the polygon");
   }
 
-  // '(' ring (',' ring)* ')'
-  void read_polygon_text(Rings<Point_2>& rings)
+  // '(' ring (',' ring)* ')', one more polygon
+  void read_polygon_text()
   {
+    const std::string prefix = m_multi ? "polygon " + std::to_string(m_out.size()) + ": " : std::string();
+    Input_polygon<Point_2> polygon;
+    Rings<Point_2>& rings = polygon.rings;
     expect('(', "expected '('");
     std::vector<double> xy;
     for(;;) {
-      read_ring_text(xy, rings.size());
-      rings.emplace_back();
-      finish_ring(rings.back(), xy, rings.size() - 1);
+      try {
+        read_ring_text(xy, rings.size());
+        rings.emplace_back();
+        finish_ring(rings.back(), xy, rings.size() - 1);
+      } catch(const Input_error& e) {
+        if(prefix.empty() || std::strncmp(e.what(), "malformed WKT", 13) == 0)
+          throw;
+        throw Input_error(prefix + e.what(), e.ring(), e.vertex());
+      }
       skip_space();
       if(m_p != m_end && *m_p == ',') {
         ++m_p;
         continue;
       }
       expect(')', "expected ',' or ')'");
+      m_out.push_back(std::move(polygon));
       return;
     }
   }
@@ -381,7 +411,7 @@ private:
       read_coordinate(xy, ring, vertex);
       const char* after = m_p;
       skip_space();
-      if(m_p != after && scan_number(m_p, m_end, false).status != Scanned_number::NOT_A_NUMBER)
+      if(m_p != after && scan_number(m_p, m_end).status != Scanned_number::NOT_A_NUMBER)
         throw Input_error("only 2D coordinates are supported (" + ring_vertex(ring, vertex) +
                           " has a third coordinate, at " + line_column(m_begin, m_p) + ")",
                           static_cast<int>(ring), static_cast<int>(vertex));
@@ -397,7 +427,7 @@ private:
   void read_coordinate(std::vector<double>& xy, std::size_t ring, std::size_t vertex)
   {
     skip_space();
-    Scanned_number n = scan_number(m_p, m_end, false);
+    Scanned_number n = scan_number(m_p, m_end);
     if(n.status == Scanned_number::NOT_A_NUMBER)
       error(m_p, "expected a number");
     if(n.status == Scanned_number::NON_FINITE)
@@ -410,405 +440,182 @@ private:
   const char* m_begin;
   const char* m_p;
   const char* m_end;
+  bool m_multi = false;
+  std::vector<Input_polygon<Point_2> > m_out;
 };
 
 // ------------------------------------------------------------------ GeoJSON
 
-/// A small JSON scanner for GeoJSON. The whole document is first checked against the
-/// JSON grammar (`skip_value`, without building a tree); the GeoJSON structure is then
-/// navigated by scanning the members of the objects of interest, and the coordinates
-/// are converted directly from the text.
+/// Reads GeoJSON with nlohmann-json (Debian's `nlohmann-json3-dev`): the document is
+/// parsed into a tree that keeps the order of object members (`ordered_json`, so that
+/// a feature's properties are written back as they were read), then walked.  Numbers
+/// are converted by the parser as `strtod` converts them in the C locale.
 template <class Point_2>
-class Geojson_polygon_reader
+class Geojson_polygons_reader
 {
-  struct Member
-  {
-    std::string key;
-    const char* value;
-  };
-
 public:
-  Geojson_polygon_reader(const char* begin, const char* end) : m_begin(begin), m_end(end) {}
+  typedef nlohmann::ordered_json Json;
 
-  Rings<Point_2> read()
+  Geojson_polygons_reader(const char* begin, const char* end) : m_begin(begin), m_end(end) {}
+
+  std::vector<Input_polygon<Point_2> > read()
   {
     const char* p = m_begin;
-    if(m_end - p >= 3 && std::memcmp(p, "\xEF\xBB\xBF", 3) == 0)
+    if(m_end - p >= 3 && std::memcmp(p, "\xEF\xBB\xBF", 3) == 0) // UTF-8 byte order mark
       p += 3;
-    p = skip_space(p);
-    if(p == m_end)
+    const char* q = p;
+    while(q != m_end && is_space(*q))
+      ++q;
+    if(q == m_end)
       throw Input_error("empty input: no polygon found");
-    const char* root = p;
-    p = skip_space(skip_value(p, 0));
-    if(p != m_end)
-      json_error(p, "unexpected text after the JSON value");
-    Rings<Point_2> rings;
-    read_object(root, rings, 0);
-    return rings;
+    Json doc;
+    try {
+      doc = Json::parse(p, m_end);
+    } catch(const Json::parse_error& e) {
+      // "[json.exception.parse_error.101] parse error at line 1, column 5: ..." -> "malformed JSON at line 1, column 5: ..."
+      std::string what = e.what();
+      const std::string at = "parse error at ";
+      std::size_t k = what.find(at);
+      throw Input_error("malformed JSON" + (k == std::string::npos ? ": " + what : " at " + what.substr(k + at.size())));
+    } catch(const Json::exception& e) { // a number out of the range of double
+      std::string what = e.what();
+      std::size_t k = what.find("] ");
+      throw Input_error("malformed JSON: " + (k == std::string::npos ? what : what.substr(k + 2)));
+    }
+    if(!doc.is_object())
+      throw Input_error("malformed GeoJSON: expected a GeoJSON object");
+    const std::string type = type_of(doc, "the document");
+    if(type == "FeatureCollection") {
+      m_multi = true;
+      const Json& features = member(doc, "features", "the FeatureCollection");
+      if(!features.is_array())
+        throw Input_error("malformed GeoJSON: \"features\" is not an array");
+      for(std::size_t f = 0; f < features.size(); ++f)
+        feature(features[f], "feature " + std::to_string(f));
+    } else if(type == "Feature") {
+      feature(doc, "the Feature");
+    } else {
+      geometry(doc, std::string(), "the geometry");
+    }
+    if(m_out.empty())
+      throw Input_error("empty polygon");
+    return std::move(m_out);
   }
 
 private:
-  // ---------------------------------------------------------------- JSON syntax
-
-  [[noreturn]] void json_error(const char* at, const std::string& what) const
+  std::string type_of(const Json& j, const std::string& where) const
   {
-    throw Input_error("malformed JSON at " + line_column(m_begin, at) + ": " + what);
+    if(!j.is_object())
+      throw Input_error("malformed GeoJSON: " + where + " is not an object");
+    auto t = j.find("type");
+    if(t == j.end())
+      throw Input_error("malformed GeoJSON: " + where + " is an object without a \"type\"");
+    if(!t->is_string())
+      throw Input_error("malformed GeoJSON: the \"type\" of " + where + " is not a string");
+    return t->template get<std::string>();
   }
 
-  [[noreturn]] void geojson_error(const char* at, const std::string& what) const
+  const Json& member(const Json& j, const char* name, const std::string& where) const
   {
-    throw Input_error("malformed GeoJSON at " + line_column(m_begin, at) + ": " + what);
+    auto m = j.find(name);
+    if(m == j.end())
+      throw Input_error("malformed GeoJSON: " + where + " has no \"" + name + "\"");
+    return *m;
   }
 
-  const char* skip_space(const char* p) const
+  void feature(const Json& f, const std::string& where)
   {
-    while(p != m_end && (*p == ' ' || *p == '\t' || *p == '\n' || *p == '\r'))
-      ++p;
-    return p;
+    const std::string type = type_of(f, where);
+    if(type != "Feature")
+      throw Input_error("not a polygon: " + where + " is a " + type + ", not a Feature");
+    auto g = f.find("geometry");
+    if(g == f.end() || g->is_null()) // a feature without location: no polygon
+      return;
+    std::string properties;
+    auto pr = f.find("properties");
+    if(pr != f.end() && pr->is_object())
+      properties = pr->dump();
+    geometry(*g, properties, where);
   }
 
-  static int hex_value(char c)
+  void geometry(const Json& g, const std::string& properties, const std::string& where)
   {
-    if(c >= '0' && c <= '9') return c - '0';
-    if(c >= 'a' && c <= 'f') return c - 'a' + 10;
-    if(c >= 'A' && c <= 'F') return c - 'A' + 10;
-    return -1;
-  }
-
-  static void append_utf8(std::string& s, unsigned long cp)
-  {
-    if(cp < 0x80) {
-      s.push_back(static_cast<char>(cp));
-    } else if(cp < 0x800) {
-      s.push_back(static_cast<char>(0xC0 | (cp >> 6)));
-      s.push_back(static_cast<char>(0x80 | (cp & 0x3F)));
-    } else if(cp < 0x10000) {
-      s.push_back(static_cast<char>(0xE0 | (cp >> 12)));
-      s.push_back(static_cast<char>(0x80 | ((cp >> 6) & 0x3F)));
-      s.push_back(static_cast<char>(0x80 | (cp & 0x3F)));
-    } else {
-      s.push_back(static_cast<char>(0xF0 | (cp >> 18)));
-      s.push_back(static_cast<char>(0x80 | ((cp >> 12) & 0x3F)));
-      s.push_back(static_cast<char>(0x80 | ((cp >> 6) & 0x3F)));
-      s.push_back(static_cast<char>(0x80 | (cp & 0x3F)));
-    }
-  }
-
-  unsigned long read_hex4(const char* p) const
-  {
-    if(m_end - p < 4)
-      json_error(p, "invalid \\u escape");
-    unsigned long v = 0;
-    for(int i = 0; i < 4; ++i) {
-      int h = hex_value(p[i]);
-      if(h < 0)
-        json_error(p + i, "invalid \\u escape");
-      v = v * 16 + static_cast<unsigned long>(h);
-    }
-    return v;
-  }
-
-  // Scans the string starting at the quote `p`; returns one past the closing quote and
-  // appends its decoded contents to `out` if not null.
-  const char* scan_string(const char* p, std::string* out) const
-  {
-    CGAL_precondition(p != m_end && *p == '"');
-    ++p;
-    for(;;) {
-      if(p == m_end)
-        json_error(p, "unterminated string");
-      char c = *p;
-      if(c == '"')
-        return p + 1;
-      if(static_cast<unsigned char>(c) < 0x20)
-        json_error(p, "control character in string");
-      if(c != '\\') {
-        if(out) out->push_back(c);
-        ++p;
-        continue;
-      }
-      ++p;
-      if(p == m_end)
-        json_error(p, "unterminated string");
-      switch(*p) {
-      case '"': case '\\': case '/':
-        if(out) out->push_back(*p);
-        ++p;
-        break;
-      case 'b': if(out) out->push_back('\b'); ++p; break;
-      case 'f': if(out) out->push_back('\f'); ++p; break;
-      case 'n': if(out) out->push_back('\n'); ++p; break;
-      case 'r': if(out) out->push_back('\r'); ++p; break;
-      case 't': if(out) out->push_back('\t'); ++p; break;
-      case 'u': {
-        unsigned long cp = read_hex4(p + 1);
-        p += 5;
-        if(cp >= 0xD800 && cp < 0xDC00 && m_end - p >= 6 && p[0] == '\\' && p[1] == 'u') {
-          unsigned long low = read_hex4(p + 2);
-          if(low >= 0xDC00 && low < 0xE000) {
-            cp = 0x10000 + ((cp - 0xD800) << 10) + (low - 0xDC00);
-            p += 6;
-          }
-        }
-        if(out) append_utf8(*out, cp);
-        break;
-      }
-      default:
-        json_error(p, "invalid escape in string");
-      }
-    }
-  }
-
-  const char* skip_literal(const char* p, const char* word) const
-  {
-    std::size_t n = std::strlen(word);
-    if(static_cast<std::size_t>(m_end - p) < n || std::memcmp(p, word, n) != 0)
-      json_error(p, "expected a JSON value");
-    return p + n;
-  }
-
-  // Checks the JSON value at `p` and returns one past its end.
-  const char* skip_value(const char* p, int depth) const
-  {
-    if(depth > 512)
-      json_error(p, "nesting too deep");
-    p = skip_space(p);
-    if(p == m_end)
-      json_error(p, "expected a JSON value");
-    switch(*p) {
-    case '{': {
-      p = skip_space(p + 1);
-      if(p != m_end && *p == '}')
-        return p + 1;
-      for(;;) {
-        if(p == m_end || *p != '"')
-          json_error(p, "expected a member name");
-        p = skip_space(scan_string(p, nullptr));
-        if(p == m_end || *p != ':')
-          json_error(p, "expected ':'");
-        p = skip_space(skip_value(p + 1, depth + 1));
-        if(p != m_end && *p == ',') {
-          p = skip_space(p + 1);
-          continue;
-        }
-        if(p != m_end && *p == '}')
-          return p + 1;
-        json_error(p, "expected ',' or '}'");
-      }
-    }
-    case '[': {
-      p = skip_space(p + 1);
-      if(p != m_end && *p == ']')
-        return p + 1;
-      for(;;) {
-        p = skip_space(skip_value(p, depth + 1));
-        if(p != m_end && *p == ',') {
-          ++p;
-          continue;
-        }
-        if(p != m_end && *p == ']')
-          return p + 1;
-        json_error(p, "expected ',' or ']'");
-      }
-    }
-    case '"':
-      return scan_string(p, nullptr);
-    case 't': return skip_literal(p, "true");
-    case 'f': return skip_literal(p, "false");
-    case 'n': return skip_literal(p, "null");
-    default: {
-      // Numbers, and the non-standard NaN / Infinity (rejected later as non-finite).
-      Scanned_number n = scan_number(p, m_end, true);
-      if(n.status == Scanned_number::NOT_A_NUMBER)
-        json_error(p, "expected a JSON value");
-      return n.end;
-    }
-    }
-  }
-
-  // ---------------------------------------------------------------- GeoJSON structure
-
-  // The members of the (already checked) object at `p`.
-  std::vector<Member> members(const char* p) const
-  {
-    std::vector<Member> result;
-    p = skip_space(p + 1);
-    if(*p == '}')
-      return result;
-    for(;;) {
-      Member m;
-      p = skip_space(scan_string(p, &m.key));
-      m.value = skip_space(p + 1);
-      result.push_back(m);
-      p = skip_space(skip_value(m.value, 1));
-      if(*p == '}')
-        return result;
-      p = skip_space(p + 1);
-    }
-  }
-
-  static const char* find(const std::vector<Member>& ms, const char* key)
-  {
-    for(const Member& m : ms)
-      if(m.key == key)
-        return m.value;
-    return nullptr;
-  }
-
-  std::string type_of(const char* object, const std::vector<Member>& ms) const
-  {
-    const char* t = find(ms, "type");
-    if(t == nullptr)
-      geojson_error(object, "object without a \"type\" member");
-    if(*t != '"')
-      geojson_error(t, "\"type\" is not a string");
-    std::string type;
-    scan_string(t, &type);
-    return type;
-  }
-
-  // The number of elements of the (already checked) array at `p`.
-  std::size_t array_size(const char* p) const
-  {
-    p = skip_space(p + 1);
-    if(*p == ']')
-      return 0;
-    std::size_t n = 0;
-    for(;;) {
-      ++n;
-      p = skip_space(skip_value(p, 1));
-      if(*p == ']')
-        return n;
-      ++p;
-    }
-  }
-
-  const char* expect_array(const char* p, const char* what) const
-  {
-    if(*p != '[')
-      geojson_error(p, std::string("expected an array for ") + what);
-    return p;
-  }
-
-  void read_object(const char* p, Rings<Point_2>& rings, int level)
-  {
-    if(*p != '{')
-      geojson_error(p, "expected a GeoJSON object");
-    std::vector<Member> ms = members(p);
-    std::string type = type_of(p, ms);
+    const std::string type = type_of(g, where);
     if(type == "Polygon") {
-      const char* c = find(ms, "coordinates");
-      if(c == nullptr)
-        geojson_error(p, "Polygon without \"coordinates\"");
-      read_polygon_coordinates(expect_array(c, "\"coordinates\""), rings);
+      polygon(member(g, "coordinates", "the Polygon"), properties);
     } else if(type == "MultiPolygon") {
-      const char* c = find(ms, "coordinates");
-      if(c == nullptr)
-        geojson_error(p, "MultiPolygon without \"coordinates\"");
-      std::size_t n = array_size(expect_array(c, "\"coordinates\""));
-      if(n == 0)
-        throw Input_error("empty polygon");
-      if(n > 1)
-        throw Input_error("not a polygon: found MultiPolygon with more than one polygon");
-      const char* first = skip_space(c + 1);
-      read_polygon_coordinates(expect_array(first, "a polygon"), rings);
-    } else if(type == "Feature" && level < 2) {
-      const char* g = find(ms, "geometry");
-      if(g == nullptr || *g == 'n')
-        throw Input_error("not a polygon: found a Feature without geometry");
-      read_geometry(g, rings);
-    } else if(type == "FeatureCollection" && level == 0) {
-      const char* f = find(ms, "features");
-      if(f == nullptr)
-        geojson_error(p, "FeatureCollection without \"features\"");
-      std::size_t n = array_size(expect_array(f, "\"features\""));
-      if(n != 1)
-        throw Input_error("not a polygon: found FeatureCollection with " + std::to_string(n) +
-                          " features (exactly one Polygon feature is supported)");
-      const char* feature = skip_space(f + 1);
-      if(*feature != '{')
-        geojson_error(feature, "expected a Feature object");
-      std::vector<Member> fms = members(feature);
-      if(type_of(feature, fms) != "Feature")
-        geojson_error(feature, "expected a Feature object");
-      read_object(feature, rings, 1);
+      m_multi = true;
+      const Json& c = member(g, "coordinates", "the MultiPolygon");
+      if(!c.is_array())
+        throw Input_error("malformed GeoJSON: the coordinates of a MultiPolygon are not an array");
+      for(const Json& p : c)
+        polygon(p, properties);
+    } else if(type == "GeometryCollection") {
+      m_multi = true;
+      const Json& gs = member(g, "geometries", "the GeometryCollection");
+      if(!gs.is_array())
+        throw Input_error("malformed GeoJSON: \"geometries\" is not an array");
+      for(const Json& x : gs)
+        geometry(x, properties, where);
+    } else if(type == "Feature" || type == "FeatureCollection") {
+      throw Input_error("malformed GeoJSON: a " + type + " inside " + where);
     } else {
-      throw Input_error("not a polygon: found " + type);
+      throw Input_error("not a polygon: found " + type + (m_multi ? " in " + where : std::string()));
     }
   }
 
-  void read_geometry(const char* g, Rings<Point_2>& rings)
+  // An array of rings, each an array of positions.  An empty array is an empty
+  // polygon, which is skipped.
+  void polygon(const Json& c, const std::string& properties)
   {
-    if(*g != '{')
-      geojson_error(g, "expected a geometry object");
-    std::vector<Member> ms = members(g);
-    std::string type = type_of(g, ms);
-    if(type == "Feature" || type == "FeatureCollection")
-      geojson_error(g, "expected a geometry object, found " + type);
-    read_object(g, rings, 2);
-  }
-
-  // [ ring, ... ] with ring = [ [x, y], ... ]
-  void read_polygon_coordinates(const char* p, Rings<Point_2>& rings)
-  {
-    p = skip_space(p + 1);
-    if(*p == ']')
-      throw Input_error("empty polygon");
+    const std::size_t index = m_out.size();
+    const std::string prefix = m_multi ? "polygon " + std::to_string(index) + ": " : std::string();
+    if(!c.is_array())
+      throw Input_error(prefix + "malformed GeoJSON: the coordinates of a Polygon are not an array");
+    if(c.empty())
+      return;
+    Input_polygon<Point_2> out;
+    out.properties = properties;
     std::vector<double> xy;
-    for(;;) {
-      std::size_t ring = rings.size();
-      p = read_ring_coordinates(expect_array(p, "a ring"), xy, ring);
-      rings.emplace_back();
-      finish_ring(rings.back(), xy, ring);
-      p = skip_space(p);
-      if(*p == ']')
-        return;
-      p = skip_space(p + 1);
-    }
-  }
-
-  // Returns one past the ring's closing bracket.
-  const char* read_ring_coordinates(const char* p, std::vector<double>& xy, std::size_t ring)
-  {
-    xy.clear();
-    p = skip_space(p + 1);
-    if(*p == ']')
-      return p + 1;
-    for(;;) {
-      std::size_t vertex = xy.size() / 2;
-      if(*p != '[')
-        geojson_error(p, "expected a position [x, y]");
-      const char* position = p;
-      p = skip_space(p + 1);
-      std::size_t count = 0;
-      while(*p != ']') {
-        Scanned_number n = scan_number(p, m_end, true);
-        if(n.status == Scanned_number::NOT_A_NUMBER)
-          geojson_error(p, "expected a number");
-        if(n.status == Scanned_number::NON_FINITE)
-          throw Input_error("non-finite coordinate: " + ring_vertex(ring, vertex),
-                            static_cast<int>(ring), static_cast<int>(vertex));
-        if(count == 2)
-          throw Input_error("only 2D coordinates are supported (" + ring_vertex(ring, vertex) +
-                            " has a third coordinate, at " + line_column(m_begin, p) + ")",
-                            static_cast<int>(ring), static_cast<int>(vertex));
-        xy.push_back(n.value);
-        ++count;
-        p = skip_space(n.end);
-        if(*p == ',')
-          p = skip_space(p + 1);
+    for(std::size_t r = 0; r < c.size(); ++r) {
+      const Json& ring = c[r];
+      if(!ring.is_array())
+        throw Input_error(prefix + "malformed GeoJSON: ring " + std::to_string(r) + " is not an array",
+                          static_cast<int>(r));
+      xy.clear();
+      for(std::size_t i = 0; i < ring.size(); ++i) {
+        const Json& pos = ring[i];
+        if(!pos.is_array() || pos.size() < 2)
+          throw Input_error(prefix + "malformed GeoJSON: " + ring_vertex(r, i) + " is not a position of 2 numbers",
+                            static_cast<int>(r), static_cast<int>(i));
+        if(pos.size() > 2)
+          throw Input_error(prefix + "only 2D coordinates are supported (" + ring_vertex(r, i) +
+                            " has a third coordinate)", static_cast<int>(r), static_cast<int>(i));
+        for(int k = 0; k < 2; ++k) {
+          if(!pos[k].is_number())
+            throw Input_error(prefix + "malformed GeoJSON: " + ring_vertex(r, i) + ": expected a number",
+                              static_cast<int>(r), static_cast<int>(i));
+          const double v = pos[k].template get<double>();
+          if(!std::isfinite(v))
+            throw Input_error(prefix + "non-finite coordinate: " + ring_vertex(r, i), static_cast<int>(r),
+                              static_cast<int>(i));
+          xy.push_back(v);
+        }
       }
-      if(count < 2)
-        geojson_error(position, "a position needs 2 coordinates");
-      p = skip_space(p + 1);
-      if(*p == ']')
-        return p + 1;
-      p = skip_space(p + 1); // ','
+      out.rings.emplace_back();
+      try {
+        finish_ring(out.rings.back(), xy, r);
+      } catch(const Input_error& e) {
+        throw Input_error(prefix + e.what(), e.ring(), e.vertex());
+      }
     }
+    m_out.push_back(std::move(out));
   }
 
   const char* m_begin;
   const char* m_end;
+  bool m_multi = false;
+  std::vector<Input_polygon<Point_2> > m_out;
 };
 
 inline bool has_extension(const std::string& path, const char* extension)
@@ -824,65 +631,18 @@ inline bool has_extension(const std::string& path, const char* extension)
 
 } // namespace internal
 
-/*!
+namespace internal {
 
-Reads a polygon with holes written as WKT: `POLYGON ((x y, x y, ...), (...), ...)`, the
-first ring being the outer ring and the others the holes. The keyword is
-case-insensitive, white space (including newlines) is arbitrary, and numbers are read as
-`strtod` reads them in the C locale (whatever the current locale). A `MULTIPOLYGON`
-holding exactly one polygon is accepted.
-
-The rings are checked to be closed (first point equal to the last one), to have at
-least 4 points as written and finite coordinates; the closing point is dropped. Vertex
-order is kept exactly as written. The geometric validity is *not* checked: call
-`validate_polygon_rings()` for that.
-
-\throws Input_error for malformed WKT (with line and column), `POLYGON EMPTY`, Z/M/ZM
-coordinates, other geometry types, a `MULTIPOLYGON` with more than one polygon,
-trailing text, non-finite numbers, unclosed rings and rings with fewer than 4 points.
-
-\tparam Point_2 a point type constructible from two `double`s.
-*/
+// The only polygon of `polygons`.
 template <class Point_2>
-Rings<Point_2> read_wkt_polygon(std::istream& in)
+Rings<Point_2> only_polygon(std::vector<Input_polygon<Point_2> >&& polygons)
 {
-  std::string text = internal::read_all(in);
-  return internal::Wkt_polygon_reader<Point_2>(text.data(), text.data() + text.size()).read();
+  if(polygons.size() != 1)
+    throw Input_error("not a polygon: found " + std::to_string(polygons.size()) + " polygons");
+  return std::move(polygons.front().rings);
 }
 
-/*!
-
-Reads a polygon with holes written as GeoJSON: a `Polygon` geometry object, a `Feature`
-whose geometry is a `Polygon`, or a `FeatureCollection` holding exactly one such
-`Feature`; a `MultiPolygon` holding exactly one polygon is accepted in place of a
-`Polygon`. Numbers are converted exactly as `strtod` converts them in the C locale.
-Checks and result are as for `read_wkt_polygon()`.
-
-\throws Input_error for malformed JSON (with line and column), other GeoJSON types,
-collections of several features, coordinates with more than 2 dimensions, non-finite
-numbers, unclosed rings and rings with fewer than 4 points.
-
-\tparam Point_2 a point type constructible from two `double`s.
-*/
-template <class Point_2>
-Rings<Point_2> read_geojson_polygon(std::istream& in)
-{
-  std::string text = internal::read_all(in);
-  return internal::Geojson_polygon_reader<Point_2>(text.data(), text.data() + text.size()).read();
-}
-
-/*!
-
-Reads a polygon with holes from the file `path`, as GeoJSON if its name ends with
-`.geojson` or `.json` and as WKT if it ends with `.wkt` (case-insensitive). For any
-other name, the format is guessed from the contents: GeoJSON if the first non-blank
-character is `{`, WKT otherwise.
-
-\throws Input_error `"cannot read file '<path>': <reason>"` if the file cannot be read,
-and the errors of `read_wkt_polygon()` and `read_geojson_polygon()`.
-*/
-template <class Point_2>
-Rings<Point_2> read_polygon_file(const std::string& path)
+inline std::string read_file(const std::string& path)
 {
   std::error_code ec;
   if(std::filesystem::is_directory(path, ec))
@@ -891,8 +651,7 @@ Rings<Point_2> read_polygon_file(const std::string& path)
   std::ifstream in(path, std::ios::in | std::ios::binary);
   if(!in) {
     int error = errno;
-    throw Input_error("cannot read file '" + path + "': " +
-                      (error != 0 ? std::strerror(error) : "cannot open"));
+    throw Input_error("cannot read file '" + path + "': " + (error != 0 ? std::strerror(error) : "cannot open"));
   }
   std::string text;
   in.seekg(0, std::ios::end);
@@ -913,7 +672,89 @@ Rings<Point_2> read_polygon_file(const std::string& path)
       throw Input_error("cannot read file '" + path + "': read error");
     text = buffer.str();
   }
+  return text;
+}
 
+} // namespace internal
+
+/*!
+
+Reads polygons with holes written as WKT: a `POLYGON ((x y, x y, ...), (...), ...)`, the
+first ring being the outer ring and the others the holes, a `MULTIPOLYGON` or a
+`GEOMETRYCOLLECTION` of them (collections may nest). Keywords are case-insensitive,
+white space (including newlines) is arbitrary, and numbers are read as `strtod` reads
+them in the C locale (whatever the current locale). Empty polygons are skipped; the
+others are returned in input order (parts of a `MULTIPOLYGON` in order).
+
+The rings are checked to be closed (first point equal to the last one), to have at
+least 4 points as written and finite coordinates; the closing point is dropped. Vertex
+order is kept exactly as written. The geometric validity is *not* checked: call
+`validate_polygon_rings()` for that. Errors in a polygon of a `MULTIPOLYGON` or a
+collection start with `polygon <k>: `.
+
+\throws Input_error for malformed WKT (with line and column), input without a polygon,
+Z/M/ZM coordinates, other geometry types, trailing text, non-finite numbers, unclosed
+rings and rings with fewer than 4 points.
+
+\tparam Point_2 a point type constructible from two `double`s.
+*/
+template <class Point_2>
+std::vector<Input_polygon<Point_2> > read_wkt_polygons(std::istream& in)
+{
+  std::string text = internal::read_all(in);
+  return internal::Wkt_polygon_reader<Point_2>(text.data(), text.data() + text.size()).read();
+}
+
+/// Reads one polygon as `read_wkt_polygons()` does (a `MULTIPOLYGON` or a collection
+/// holding exactly one polygon is accepted), and throws `Input_error` for more.
+template <class Point_2>
+Rings<Point_2> read_wkt_polygon(std::istream& in)
+{
+  return internal::only_polygon(read_wkt_polygons<Point_2>(in));
+}
+
+/*!
+
+Reads polygons with holes written as GeoJSON (RFC 7946): a `Polygon`, `MultiPolygon` or
+`GeometryCollection` geometry, a `Feature` or a `FeatureCollection` of them. Features
+without geometry (`null`) and empty polygons are skipped. Each polygon carries the
+`properties` of its feature. Parsing is done by nlohmann-json; numbers are converted as
+`strtod` converts them. Checks and result are as for `read_wkt_polygons()`.
+
+\throws Input_error for malformed JSON (with line and column), other GeoJSON types,
+input without a polygon, coordinates with more than 2 dimensions, numbers out of the
+range of `double`, unclosed rings and rings with fewer than 4 points.
+
+\tparam Point_2 a point type constructible from two `double`s.
+*/
+template <class Point_2>
+std::vector<Input_polygon<Point_2> > read_geojson_polygons(std::istream& in)
+{
+  std::string text = internal::read_all(in);
+  return internal::Geojson_polygons_reader<Point_2>(text.data(), text.data() + text.size()).read();
+}
+
+/// Reads one polygon as `read_geojson_polygons()` does, and throws `Input_error` for more.
+template <class Point_2>
+Rings<Point_2> read_geojson_polygon(std::istream& in)
+{
+  return internal::only_polygon(read_geojson_polygons<Point_2>(in));
+}
+
+/*!
+
+Reads polygons with holes from the file `path`, as GeoJSON if its name ends with
+`.geojson` or `.json` and as WKT if it ends with `.wkt` (case-insensitive). For any
+other name, the format is guessed from the contents: GeoJSON if the first non-blank
+character is `{`, WKT otherwise.
+
+\throws Input_error `"cannot read file '<path>': <reason>"` if the file cannot be read,
+and the errors of `read_wkt_polygons()` and `read_geojson_polygons()`.
+*/
+template <class Point_2>
+std::vector<Input_polygon<Point_2> > read_polygons_file(const std::string& path)
+{
+  const std::string text = internal::read_file(path);
   const char* b = text.data();
   const char* e = b + text.size();
   bool geojson;
@@ -930,8 +771,15 @@ Rings<Point_2> read_polygon_file(const std::string& path)
     geojson = (p != e && *p == '{');
   }
   if(geojson)
-    return internal::Geojson_polygon_reader<Point_2>(b, e).read();
+    return internal::Geojson_polygons_reader<Point_2>(b, e).read();
   return internal::Wkt_polygon_reader<Point_2>(b, e).read();
+}
+
+/// Reads one polygon as `read_polygons_file()` does, and throws `Input_error` for more.
+template <class Point_2>
+Rings<Point_2> read_polygon_file(const std::string& path)
+{
+  return internal::only_polygon(read_polygons_file<Point_2>(path));
 }
 
 /*!
