@@ -2,9 +2,10 @@
 //
 //   progressive_medial_axis [options] INPUT.wkt|INPUT.geojson
 //
-// Reads one polygon (WKT POLYGON or GeoJSON Polygon), computes its medial
-// axis (in one shot, or progressively by region growing with --step or
-// --frames), and prints or writes it.  Run with
+// Reads polygons (WKT POLYGON, MULTIPOLYGON, GEOMETRYCOLLECTION; GeoJSON
+// geometries, Feature, FeatureCollection), computes the medial axis of each
+// (in one shot, or progressively by region growing with --step or --frames,
+// for one polygon), and prints or writes them.  Run with
 // --help for the options.  Exit status: 0 on success, 2 on invalid input or
 // usage, 1 on any other failure.
 
@@ -14,10 +15,12 @@
 #include <CGAL/Progressive_medial_axis_2/Medial_axis_significance_2.h>
 #include <CGAL/Progressive_medial_axis_2/Medial_axis_centerline_2.h>
 #include <CGAL/Progressive_medial_axis_2/maximum_inscribed_circle_2.h>
+#include <CGAL/Progressive_medial_axis_2/validate_polygon.h>
 
 #include <pma_tool/polygon_io.h>
 #include <pma_tool/medial_axis_io.h>
 #include <pma_tool/medial_axis_drawing.h>
+#include <pma_tool/repair.h>
 
 #ifdef CGAL_LINKED_WITH_TBB
 #include <tbb/parallel_for.h>
@@ -46,10 +49,13 @@ namespace {
 const char* usage_text =
   "usage: progressive_medial_axis [options] INPUT.wkt|INPUT.geojson\n"
   "\n"
-  "Computes the medial axis of one polygon: in one shot (divide and conquer, in\n"
-  "parallel), or progressively by region growing with --step or --frames.\n"
+  "Computes the medial axis of each polygon of the input (WKT POLYGON, MULTIPOLYGON,\n"
+  "GEOMETRYCOLLECTION; GeoJSON Polygon, MultiPolygon, GeometryCollection, Feature,\n"
+  "FeatureCollection): in one shot (divide and conquer, in parallel), or for one\n"
+  "polygon progressively by region growing with --step or --frames.\n"
   "Generator ids: e<r>.<i> is the edge from vertex i to vertex i+1 of ring r\n"
-  "(ring 0 the outer ring, ring k the k-th hole), v<r>.<i> the reflex vertex i.\n"
+  "(ring 0 the outer ring, ring k the k-th hole), v<r>.<i> the reflex vertex i;\n"
+  "with several polygons, p<k>: in front (k the polygon's index in input order).\n"
   "\n"
   "options:\n"
   "  --pairs            print 'pair A B L' for every medial curve (A < B, L its length)\n"
@@ -76,6 +82,11 @@ const char* usage_text =
   "  --inscribed-circle print 'circle X Y R': the maximum inscribed circle\n"
   "  --tolerance D      distance within which WKT and GeoJSON polylines follow the\n"
   "                     curves (default: 1e-6 of the shape's diagonal)\n"
+  "  --repair           turn invalid polygons (crossings, overlapping edges, spikes,\n"
+  "                     zero-length edges, holes outside) into valid ones with GEOS\n"
+  "                     (MakeValid, structure method); ids then refer to the polygons\n"
+  "                     after repair, as --repaired-out writes them\n"
+  "  --repaired-out FILE  write the polygons after --repair as WKT\n"
   "  --stats            print the input size, step count, times and the largest n_v\n"
   "  --help             print this text\n";
 
@@ -87,7 +98,8 @@ struct Options {
   std::string input, shape_out, svg, geojson, wkt_out, frames_prefix, traits = "filtered";
   int frames = 0;
   int threads = 0;   // 0: all hardware threads
-  bool prune = false, extend = false, inscribed_circle = false;
+  bool prune = false, extend = false, inscribed_circle = false, repair = false;
+  std::string repaired_out;
   double prune_et = 0, prune_ratio = 0, tolerance = -1;
   std::string centerline, width;
 };
@@ -175,6 +187,8 @@ Options parse(int argc, char** argv)
     else if(a == "--centerline") o.centerline = value("--centerline");
     else if(a == "--width") o.width = value("--width");
     else if(a == "--extend") o.extend = true;
+    else if(a == "--repair") o.repair = true;
+    else if(a == "--repaired-out") o.repaired_out = value("--repaired-out");
     else if(a == "--inscribed-circle") o.inscribed_circle = true;
     else if(a == "--tolerance") {
       o.tolerance = parse_number("--tolerance", value("--tolerance"));
@@ -191,6 +205,9 @@ Options parse(int argc, char** argv)
   }
   if(o.input.empty()) usage_error("no input file");
   if(o.frames > 0 && o.frames_prefix.empty()) usage_error("--frames needs --frames-prefix");
+  if(!o.repaired_out.empty() && !o.repair) usage_error("--repaired-out needs --repair");
+  if(o.repair && !pma_tool::can_repair())
+    usage_error("--repair needs GEOS: this build of the tool has none (install libgeos-dev and rebuild)");
   return o;
 }
 
@@ -250,6 +267,7 @@ struct Polygon_job {
   std::unique_ptr<CGAL::Pruned_medial_axis_2<Kernel> > pruned;
   std::unique_ptr<CGAL::Medial_axis_centerline_2<Kernel> > center;
   double prune_seconds = 0;
+  double validation_seconds = 0;
   std::string error;                     // the input error of this polygon, if any
 };
 
@@ -303,6 +321,25 @@ private:
   std::mutex mutex_;
 };
 
+// What --repair repaired: the input polygons repaired, by the problem the
+// check found first, and the polygons after repair.
+struct Repair_counts {
+  std::size_t polygons = 0, self_intersections = 0, repeated_vertices = 0, spikes = 0, zero_length_edges = 0,
+              holes_outside = 0, other = 0, output_polygons = 0;
+  double seconds = 0;
+  void count(const std::string& error)
+  {
+    ++polygons;
+    auto has = [&](const char* s) { return error.find(s) != std::string::npos; };
+    if(has("self-intersection")) ++self_intersections;
+    else if(has("repeated vertex")) ++repeated_vertices;
+    else if(has("spike")) ++spikes;
+    else if(has("zero-length edge")) ++zero_length_edges;
+    else if(has("not inside the outer ring") || has("lies inside hole")) ++holes_outside;
+    else ++other;
+  }
+};
+
 template <class Traits>
 int run(const Options& o)
 {
@@ -320,10 +357,134 @@ int run(const Options& o)
     return 2;
   }
   double read_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+
+  int threads = 1;
+#ifdef CGAL_LINKED_WITH_TBB
+  threads = o.threads > 0 ? o.threads : tbb::info::default_concurrency();
+  // exact kernels run sequentially (see CGAL::medial_axis_2)
+  if(!std::is_floating_point<typename Traits::Kernel::FT>::value) threads = 1;
+  tbb::task_arena arena(threads);
+#endif
+  auto in_arena = [&](const auto& f) {
+#ifdef CGAL_LINKED_WITH_TBB
+    arena.execute(f);
+#else
+    f();
+#endif
+  };
+  // f(k) for k in order, in parallel over the polygons where the kernel allows
+  auto for_each_polygon = [&](const std::vector<std::size_t>& order, const auto& f) {
+#ifdef CGAL_LINKED_WITH_TBB
+    if(order.size() > 1 && std::is_floating_point<typename Traits::Kernel::FT>::value) {
+      tbb::parallel_for(std::size_t(0), order.size(), [&](std::size_t i) { f(order[i]); });
+      return;
+    }
+#endif
+    for(std::size_t k : order) f(k);
+  };
+  // the polygons, largest first
+  auto largest_first = [](const auto& polygons) {
+    std::vector<std::size_t> order(polygons.size());
+    std::vector<std::size_t> size(polygons.size(), 0);
+    for(std::size_t k = 0; k < order.size(); ++k) {
+      order[k] = k;
+      for(const auto& r : polygons[k].rings) size[k] += r.size();
+    }
+    std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return size[a] > size[b]; });
+    return order;
+  };
+  auto validate = [](const auto& rings, std::string& error) {
+    const auto tv = std::chrono::steady_clock::now();
+    try {
+      CGAL::Progressive_medial_axes::validate_polygon(rings);
+    } catch(const CGAL::Progressive_medial_axes::Input_error& e) {
+      error = e.what();
+    }
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - tv).count();
+  };
+  // the first of the errors, and how many polygons have one
+  auto report = [&](const std::vector<std::string>& errors, const std::string& what) {
+    std::size_t first = errors.size(), count = 0;
+    for(std::size_t k = 0; k < errors.size(); ++k)
+      if(!errors[k].empty()) {
+        if(first == errors.size()) first = k;
+        ++count;
+      }
+    if(count == 0) return false;
+    std::cerr << o.input << ": " << (errors.size() > 1 ? "polygon " + std::to_string(first) + ": " : "") << what
+              << errors[first];
+    if(count > 1) std::cerr << " (and " << count - 1 << " more invalid polygons)";
+    std::cerr << "\n";
+    return true;
+  };
+
+  // every polygon is checked before any is computed: an invalid one stops
+  // the run at once, or is repaired with --repair
+  std::vector<std::string> errors(input.size());
+  std::vector<double> validation_seconds(input.size(), 0);
+  in_arena([&]() {
+    for_each_polygon(largest_first(input), [&](std::size_t k) { validation_seconds[k] = validate(input[k].rings, errors[k]); });
+  });
+  Repair_counts repairs;
+  if(o.repair) {
+    const auto tr = std::chrono::steady_clock::now();
+    std::vector<std::vector<CGAL::Progressive_medial_axes::Rings<CGAL::Epick::Point_2> > > repaired(input.size());
+    std::vector<std::string> repair_errors(input.size());
+    std::vector<std::size_t> invalid;
+    for(std::size_t k = 0; k < input.size(); ++k)
+      if(!errors[k].empty()) invalid.push_back(k);
+    in_arena([&]() {
+      for_each_polygon(invalid, [&](std::size_t k) {
+        try {
+          repaired[k] = pma_tool::repair_polygon(input[k].rings);
+          for(const auto& r : repaired[k]) {
+            validate(r, repair_errors[k]);
+            if(!repair_errors[k].empty()) break;
+          }
+        } catch(const CGAL::Progressive_medial_axes::Input_error& e) {
+          repair_errors[k] = e.what();
+        }
+      });
+    });
+    if(report(repair_errors, "after repair: ")) return 2;
+    std::vector<pma_tool::Input_polygon<CGAL::Epick::Point_2> > out;
+    std::vector<double> seconds;
+    for(std::size_t k = 0; k < input.size(); ++k) {
+      if(errors[k].empty()) {
+        out.push_back(std::move(input[k]));
+        seconds.push_back(validation_seconds[k]);
+        continue;
+      }
+      repairs.count(errors[k]);
+      for(auto& r : repaired[k]) {
+        out.push_back(pma_tool::Input_polygon<CGAL::Epick::Point_2>{std::move(r), input[k].properties});
+        seconds.push_back(0);
+      }
+    }
+    if(out.empty()) {
+      std::cerr << o.input << ": after repair: no polygon of positive area is left\n";
+      return 2;
+    }
+    input = std::move(out);
+    validation_seconds = std::move(seconds);
+    repairs.output_polygons = input.size();
+    repairs.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - tr).count();
+    if(!o.repaired_out.empty()) {
+      std::ofstream f = open_out(o.repaired_out);
+      std::vector<CGAL::Progressive_medial_axes::Rings<CGAL::Epick::Point_2> > polygons;
+      for(const auto& p : input) polygons.push_back(p.rings);
+      pma_tool::write_wkt_polygons(f, polygons);
+      f << "\n";
+    }
+  } else if(report(errors, "")) {
+    return 2;
+  }
+
   const bool multi = input.size() > 1;
   std::vector<Job> jobs(input.size());
   for(std::size_t k = 0; k < input.size(); ++k) {
     jobs[k].input = &input[k];
+    jobs[k].validation_seconds = validation_seconds[k];
     if(multi) jobs[k].prefix = "p" + std::to_string(k) + ":";
   }
 
@@ -332,7 +493,6 @@ int run(const Options& o)
     usage_error("--step, --frames and --shape-out need one polygon; " + o.input + " has " +
                 std::to_string(input.size()));
   std::unique_ptr<PMA> pma;
-  int threads = 1;
   if(!progressive) {
     // the one-shot divide and conquer of every polygon (in parallel over the
     // polygons, largest first, and within each), then what the options ask
@@ -341,62 +501,27 @@ int run(const Options& o)
     std::mutex mutex;
     const std::thread::id caller = std::this_thread::get_id();
     Progress progress(jobs.size());
-    auto compute_one = [&](Job& job) {
-      counters.run_counted(caller, mutex, [&]() {
-        try {
-          job.one_shot = CGAL::medial_axis_2(job.input->rings, Traits(), CGAL::CHECK_INPUT, &job.stats);
-        } catch(const CGAL::Progressive_medial_axes::Input_error& e) {
-          job.error = e.what();
-          return;
-        }
-        job.ma = &job.one_shot;
-        analyse(o, job);
-        if(o.stats) {   // the step count of region growing (counting steps does not count as work)
-          const auto filters = filter_counters<Traits>(0);
-          job.steps = PMA(job.input->rings, Traits(), CGAL::TRUST_INPUT).number_of_steps();
-          restore_filter_counters<Traits>(filters, 0);
-        }
+    in_arena([&]() {
+      for_each_polygon(largest_first(input), [&](std::size_t k) {
+        Job& job = jobs[k];
+        counters.run_counted(caller, mutex, [&]() {
+          job.one_shot = CGAL::medial_axis_2(job.input->rings, Traits(), CGAL::TRUST_INPUT, &job.stats);
+          job.stats.validation_seconds = job.validation_seconds;
+          job.ma = &job.one_shot;
+          analyse(o, job);
+          if(o.stats) {   // the step count of region growing (counting steps does not count as work)
+            const auto filters = filter_counters<Traits>(0);
+            job.steps = PMA(job.input->rings, Traits(), CGAL::TRUST_INPUT).number_of_steps();
+            restore_filter_counters<Traits>(filters, 0);
+          }
+        });
+        progress.done_one();
       });
-      progress.done_one();
-    };
-    std::vector<std::size_t> order(jobs.size());
-    for(std::size_t k = 0; k < order.size(); ++k) order[k] = k;
-    std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
-      auto size = [&](std::size_t k) {
-        std::size_t n = 0;
-        for(const auto& r : input[k].rings) n += r.size();
-        return n;
-      };
-      return size(a) > size(b);
     });
-    auto compute = [&]() {
-#ifdef CGAL_LINKED_WITH_TBB
-      if(multi && std::is_floating_point<typename Traits::Kernel::FT>::value) {
-        tbb::parallel_for(std::size_t(0), order.size(), [&](std::size_t i) { compute_one(jobs[order[i]]); });
-        return;
-      }
-#endif
-      for(std::size_t k : order) compute_one(jobs[k]);
-    };
-#ifdef CGAL_LINKED_WITH_TBB
-    threads = o.threads > 0 ? o.threads : tbb::info::default_concurrency();
-    // exact kernels run sequentially (see CGAL::medial_axis_2)
-    if(!std::is_floating_point<typename Traits::Kernel::FT>::value) threads = 1;
-    tbb::task_arena arena(threads);
-    arena.execute(compute);
-#else
-    compute();
-#endif
     if constexpr(!std::is_empty<Counters>::value) counters.gather();
-    for(const Job& job : jobs)
-      if(!job.error.empty()) {
-        std::cerr << o.input << ": " << (multi ? "polygon " + job.prefix.substr(1, job.prefix.size() - 2) + ": " : "")
-                  << job.error << "\n";
-        return 2;
-      }
   } else {
     try {
-      pma.reset(new PMA(input[0].rings));
+      pma.reset(new PMA(input[0].rings, Traits(), CGAL::TRUST_INPUT));
     } catch(const CGAL::Progressive_medial_axes::Input_error& e) {
       std::cerr << o.input << ": " << e.what() << "\n";
       return 2;
@@ -557,6 +682,13 @@ int run(const Options& o)
     if(o.prune) std::printf("pruned_curves %zu\n", pruned_curves);
     if(jobs[0].center) std::printf("centerline_length %.17g\n", centerline_length);
     if(jobs[0].pruned) std::printf("time_prune %.6f\n", prune_seconds);
+    if(o.repair)
+      std::printf("repaired_polygons %zu\nrepaired_self_intersections %zu\nrepaired_repeated_vertices %zu\n"
+                  "repaired_spikes %zu\nrepaired_zero_length_edges %zu\nrepaired_holes_outside %zu\nrepaired_other %zu\n"
+                  "repair_output_polygons %zu\ntime_repair %.6f\n",
+                  repairs.polygons, repairs.self_intersections, repairs.repeated_vertices, repairs.spikes,
+                  repairs.zero_length_edges, repairs.holes_outside, repairs.other,
+                  repairs.output_polygons, repairs.seconds);
   }
   // The process ends right after the output (main() calls std::_Exit):
   // the axes are left to the system rather than freed record by record.

@@ -829,6 +829,24 @@ void write_wkt_polygon(std::ostream& out, const Rings<Point_2>& rings)
   out.write(text.data(), static_cast<std::streamsize>(text.size()));
 }
 
+/// Writes `polygons` as one WKT `POLYGON` if there is one, as a `MULTIPOLYGON`
+/// otherwise, coordinates as by `write_wkt_polygon()`.
+template <class Point_2>
+void write_wkt_polygons(std::ostream& out, const std::vector<Rings<Point_2> >& polygons)
+{
+  if(polygons.size() == 1) {
+    write_wkt_polygon(out, polygons[0]);
+    return;
+  }
+  out << "MULTIPOLYGON (";
+  for(std::size_t k = 0; k < polygons.size(); ++k) {
+    std::ostringstream one;
+    write_wkt_polygon(one, polygons[k]);
+    out << (k ? ", " : "") << one.str().substr(8);   // without "POLYGON "
+  }
+  out << ")";
+}
+
 } // namespace pma_tool
 
 #endif // PMA_TOOL_POLYGON_IO_H
