@@ -49,4 +49,27 @@ if(PMA_SANITIZER_TESTS AND CMAKE_CXX_COMPILER_ID MATCHES "GNU|Clang")
   target_link_options(test_api_tsan PRIVATE -fsanitize=thread)
   add_test(NAME api_threads_tsan COMMAND test_api_tsan --threads)
   set_tests_properties(api_threads_tsan PROPERTIES ENVIRONMENT "TSAN_OPTIONS=halt_on_error=1 exitcode=66")
+
+  # AddressSanitizer and UndefinedBehaviorSanitizer: the readers and the
+  # check of the input (test_input), the tool's contract (test_tool running a
+  # sanitized tool), the engine's drivers and the analysis (test_pruning).
+  set(pma_asan_flags -fsanitize=address,undefined -fno-sanitize-recover=undefined -fno-omit-frame-pointer -O1 -g)
+  foreach(name test_input test_pruning)
+    add_executable(${name}_asan ${name}.cpp)
+    target_link_libraries(${name}_asan PRIVATE pma_tool)
+    target_include_directories(${name}_asan PRIVATE ${CMAKE_CURRENT_SOURCE_DIR}/include)
+    target_compile_definitions(${name}_asan PRIVATE PMA_TEST_DATA="${PMA_TEST_DATA}")
+  endforeach()
+  pma_tool_executable(progressive_medial_axis_asan)
+  foreach(target test_input_asan test_pruning_asan progressive_medial_axis_asan)
+    target_compile_options(${target} PRIVATE ${pma_asan_flags})
+    target_link_options(${target} PRIVATE -fsanitize=address,undefined)
+  endforeach()
+  add_test(NAME input_asan COMMAND test_input_asan)
+  add_test(NAME pruning_asan COMMAND test_pruning_asan)
+  if(TARGET sdg_pairs)
+    add_test(NAME tool_asan COMMAND test_tool $<TARGET_FILE:progressive_medial_axis_asan> $<TARGET_FILE:sdg_pairs> ${PMA_TEST_DATA})
+  endif()
+  set_tests_properties(input_asan pruning_asan PROPERTIES TIMEOUT 1200
+                       ENVIRONMENT "ASAN_OPTIONS=detect_leaks=1:abort_on_error=1;UBSAN_OPTIONS=print_stacktrace=1")
 endif()
