@@ -21,6 +21,7 @@
 #include <CGAL/Progressive_medial_axis_2/internal/Input_conversion.h>
 
 #include <CGAL/Kernel_traits.h>
+#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 
 #include <CGAL/enum.h>
 #include <CGAL/number_utils.h>
@@ -121,10 +122,15 @@ class Polygon_rings_validator
   typedef std::set<Status_edge, Status_less> Status;
 
 public:
-  explicit Polygon_rings_validator(const Rings<Point_2>& rings, const Kernel& kernel = Kernel())
+  /// With `allow_touching`, rings may touch themselves and each other at
+  /// vertices (OGC touching holes, pinches, inverted islands; see
+  /// `check_touching_vertices()`); otherwise a repeated vertex is an error.
+  explicit Polygon_rings_validator(const Rings<Point_2>& rings, bool allow_touching = false,
+                                   const Kernel& kernel = Kernel())
     : m_rings(rings),
       m_orientation(kernel.orientation_2_object()),
-      m_compare_xy(kernel.compare_xy_2_object())
+      m_compare_xy(kernel.compare_xy_2_object()),
+      m_allow_touching(allow_touching)
   {}
 
   void run()
@@ -137,8 +143,12 @@ public:
     sort_vertices();
     check_distinct_vertices_per_ring();
     check_zero_length_edges();
-    check_repeated_vertices();
+    if(!m_allow_touching)
+      check_repeated_vertices();
     check_spikes();
+    compute_orientations();
+    if(m_allow_touching)
+      check_touching_vertices();
     sweep();
     check_nesting();
   }
@@ -296,6 +306,123 @@ private:
         fail("spike: " + vertex_name(g) + " folds back", g);
   }
 
+  // ---------------------------------------------------------------- touching vertices
+
+  // The orientation of each ring: the side its enclosed region lies on, read at its
+  // lexicographically smallest vertex (a convex vertex of the region), or, when that
+  // point is a place where the ring touches itself, from the sign of its area,
+  // computed exactly.
+  void compute_orientations()
+  {
+    const std::size_t n = m_points.size(), nr = m_rings.size();
+    m_smallest.assign(nr, n);
+    for(Id g : m_order)
+      if(m_smallest[ring_of(g)] == n)
+        m_smallest[ring_of(g)] = g;
+    m_ccw.assign(nr, false);
+    for(std::size_t r = 0; r < nr; ++r) {
+      Id m = m_smallest[r];
+      bool self_touch = false;
+      for(Id g = m_ring_begin[r]; g < m_ring_begin[r + 1] && !self_touch; ++g)
+        self_touch = (g != m && equal(g, m));
+      if(!self_touch) {
+        m_ccw[r] = m_orientation(point(prev(m)), point(m), point(next(m))) == CGAL::LEFT_TURN;
+        continue;
+      }
+      typedef typename CGAL::Exact_predicates_exact_constructions_kernel::FT Exact;
+      Exact twice_area = 0;
+      const Exact x0 = Exact(CGAL::to_double(point(m).x())), y0 = Exact(CGAL::to_double(point(m).y()));
+      for(Id g = m_ring_begin[r]; g < m_ring_begin[r + 1]; ++g) {
+        const Exact ax = Exact(CGAL::to_double(point(g).x())) - x0, ay = Exact(CGAL::to_double(point(g).y())) - y0;
+        const Exact bx = Exact(CGAL::to_double(point(next(g)).x())) - x0,
+                    by = Exact(CGAL::to_double(point(next(g)).y())) - y0;
+        twice_area += ax * by - ay * bx;
+      }
+      m_ccw[r] = CGAL::sign(twice_area) == CGAL::POSITIVE;
+    }
+  }
+
+  // Is the polygon's interior on the left of the edges of ring r?  (The outer ring
+  // encloses it, the holes exclude it.)
+  bool interior_on_left(Id r) const { return (r == 0) == static_cast<bool>(m_ccw[r]); }
+
+  // The direction from a touching point P to point q, in counterclockwise order
+  // starting from the direction of the positive x axis.
+  bool ccw_before(const Point_2& p, const Point_2& a, const Point_2& b) const
+  {
+    auto upper = [&](const Point_2& q) {   // in [0, pi)
+      CGAL::Comparison_result c = CGAL::compare(q.y(), p.y());
+      return c == CGAL::LARGER || (c == CGAL::EQUAL && CGAL::compare(q.x(), p.x()) == CGAL::LARGER);
+    };
+    const bool ua = upper(a), ub = upper(b);
+    if(ua != ub)
+      return ua;
+    return m_orientation(p, a, b) == CGAL::LEFT_TURN;
+  }
+
+  /*
+    Where rings touch, at a point P where several vertices (occurrences) coincide,
+    the 2m edges at P cut a small disc around P into 2m sectors.  Each edge has the
+    polygon's interior on a known side (the side of the outer ring's enclosed region,
+    the other side of a hole's), so each edge says whether the sector following it
+    counterclockwise is interior.  The polygon is valid at P iff no two edges at P
+    run in the same direction (an overlap) and, in counterclockwise order, the
+    sectors alternate between interior and exterior: each edge's claim agrees with
+    its neighbours'.  Otherwise two rings (or a ring and itself) cross at P.  The
+    interior near P is then the union of the interior sectors (wedges), pairwise
+    disjoint, at most one of them reflex (their angles add up to at most 2 pi).
+  */
+  void check_touching_vertices() const
+  {
+    std::size_t k = 0;
+    while(k < m_order.size()) {
+      std::size_t end = k + 1;
+      while(end < m_order.size() && equal(m_order[k], m_order[end]))
+        ++end;
+      if(end - k > 1)
+        check_touching_point(k, end);
+      k = end;
+    }
+  }
+
+  void check_touching_point(std::size_t begin, std::size_t end) const
+  {
+    const Point_2& p = point(m_order[begin]);
+    struct Ray { Id to; Id edge; Id occurrence; bool outgoing; };
+    std::vector<Ray> rays;
+    for(std::size_t k = begin; k < end; ++k) {
+      Id g = m_order[k];
+      rays.push_back(Ray{ next(g), g, g, true });
+      rays.push_back(Ray{ prev(g), prev(g), g, false });
+    }
+    std::sort(rays.begin(), rays.end(),
+              [&](const Ray& a, const Ray& b) { return ccw_before(p, point(a.to), point(b.to)); });
+    const std::size_t n = rays.size();
+    for(std::size_t i = 0; i < n; ++i) {
+      const Ray& a = rays[i];
+      const Ray& b = rays[(i + 1) % n];
+      if(!ccw_before(p, point(a.to), point(b.to)) && !ccw_before(p, point(b.to), point(a.to)) &&
+         a.occurrence != b.occurrence) {
+        Id x = a.edge, y = b.edge;
+        if(y < x) std::swap(x, y);
+        fail("self-intersection: " + edge_name(x) + " overlaps " + edge_name(y), x);
+      }
+    }
+    // does the sector counterclockwise after the ray lie in the interior?  (An
+    // outgoing edge has the interior on the left of its direction from P, an
+    // incoming one on the right, when its ring has the interior on its left.)
+    auto interior_after = [&](const Ray& ray) { return ray.outgoing == interior_on_left(ring_of(ray.occurrence)); };
+    for(std::size_t i = 0; i < n; ++i) {
+      const Ray& a = rays[i];
+      const Ray& b = rays[(i + 1) % n];
+      if(interior_after(a) == interior_after(b)) {
+        Id x = a.occurrence, y = b.occurrence;   // (two edges of one vertex never disagree so)
+        if(y < x) std::swap(x, y);
+        fail("self-intersection: " + vertex_name(x) + " and " + vertex_name(y) + " cross at " + point_text(x), x);
+      }
+    }
+  }
+
   // ---------------------------------------------------------------- step 7: the sweep
 
   // The status order: is edge a below edge b at the current position of the sweep?
@@ -307,7 +434,7 @@ private:
   {
     if(a.id == b.id)
       return false;
-    if(a.left_id == b.left_id) {
+    if(a.left_id == b.left_id || (m_allow_touching && m_compare_xy(a.left, b.left) == CGAL::EQUAL)) {
       CGAL::Orientation o = m_orientation(a.left, b.right, a.right);
       if(o != CGAL::COLLINEAR)
         return o == CGAL::RIGHT_TURN;
@@ -375,6 +502,19 @@ private:
       return;
     }
     Id a0 = a, a1 = next(a), b0 = b, b1 = next(b);
+    if(m_allow_touching) {
+      // Edges of vertices that touch: they meet at the touching point (where the
+      // wedges were checked), and elsewhere only if they overlap.
+      for(Id s : { a0, a1 })
+        for(Id t : { b0, b1 })
+          if(equal(s, t)) {
+            Id x = (s == a0) ? a1 : a0, y = (t == b0) ? b1 : b0;
+            if(m_orientation(point(s), point(x), point(y)) == CGAL::COLLINEAR &&
+               m_compare_xy(point(x), point(s)) == m_compare_xy(point(y), point(s)))
+              report_contact(OVERLAPPING, a, b, a);
+            return;
+          }
+    }
     CGAL::Orientation o1 = m_orientation(point(a0), point(a1), point(b0));
     CGAL::Orientation o2 = m_orientation(point(a0), point(a1), point(b1));
     if(o1 == CGAL::COLLINEAR && o2 == CGAL::COLLINEAR) {
@@ -435,49 +575,79 @@ private:
       m_right[e] = forward ? f : e;
     }
 
-    // The smallest vertex and the orientation of each ring.
-    const std::size_t nr = m_rings.size();
-    std::vector<Id> smallest(nr, n);
-    for(Id g : m_order)
-      if(smallest[ring_of(g)] == n)
-        smallest[ring_of(g)] = g;
-    m_ccw.assign(nr, false);
-    for(std::size_t r = 0; r < nr; ++r) {
-      Id m = smallest[r];
-      m_ccw[r] = m_orientation(point(prev(m)), point(m), point(next(m))) == CGAL::LEFT_TURN;
-    }
-    m_parent.assign(nr, -1);
+    m_parent.assign(m_rings.size(), -1);
+    m_parent_known.assign(m_rings.size(), false);
 
     Status status(Status_less{this});
     m_status = &status;
     m_handles.resize(n);
     m_contact = NO_CONTACT;
 
-    for(Id v : m_order) {
-      Id incident[2] = { prev(v), v }; // the edges ending and starting at v in the ring
-      for(Id e : incident)
-        if(m_right[e] == v)
-          remove_edge(e);
-      for(Id e : incident)
-        if(m_left[e] == v)
-          insert_edge(e);
-
-      Id r = ring_of(v);
-      if(v == smallest[r]) {
-        // Both edges of v start at v; find the edge directly below them.
-        Id e1 = incident[0], e2 = incident[1];
-        Id lower = (m_orientation(point(v), point(m_right[e1]), point(m_right[e2])) ==
-                    CGAL::LEFT_TURN) ? e1 : e2;
-        typename Status::iterator it = m_handles[lower];
-        if(it != status.begin()) {
-          Id t = std::prev(it)->id;
-          Id q = ring_of(t);
-          bool interior_above = (m_ccw[q] == (m_left[t] == t));
-          m_parent[r] = interior_above ? static_cast<long>(q) : m_parent[q];
-        }
+    // The vertices at one point (several where rings touch): first the edges ending
+    // there leave the status, then the edges starting there enter it.
+    std::size_t begin = 0;
+    std::vector<Id> pending;
+    while(begin < m_order.size()) {
+      std::size_t end = begin + 1;
+      while(m_allow_touching && end < m_order.size() && equal(m_order[begin], m_order[end]))
+        ++end;
+      for(std::size_t k = begin; k < end; ++k) {
+        const Id v = m_order[k];
+        for(Id e : { prev(v), v })
+          if(m_right[e] == v)
+            remove_edge(e);
       }
+      for(std::size_t k = begin; k < end; ++k) {
+        const Id v = m_order[k];
+        for(Id e : { prev(v), v })
+          if(m_left[e] == v)
+            insert_edge(e);
+      }
+      // the parents of the rings whose smallest vertex is here, lowest first (a ring
+      // may need the parent of a ring touching it here, below it)
+      pending.clear();
+      for(std::size_t k = begin; k < end; ++k)
+        if(m_order[k] == m_smallest[ring_of(m_order[k])])
+          pending.push_back(m_order[k]);
+      while(!pending.empty()) {
+        const std::size_t before = pending.size();
+        pending.erase(std::remove_if(pending.begin(), pending.end(), [&](Id v) { return find_parent(v); }),
+                      pending.end());
+        if(pending.size() == before)
+          break;
+      }
+      begin = end;
     }
     m_status = nullptr;
+  }
+
+  // At the smallest vertex v of its ring r: the ring directly enclosing r, from the
+  // first edge of another ring directly below the edges of v.  Returns false if that
+  // needs the parent of a ring not known yet (one touching r at v, whose smallest
+  // vertex is also there).
+  bool find_parent(Id v)
+  {
+    const Id r = ring_of(v);
+    // both edges of v start at v; the lower one
+    const Id e1 = prev(v), e2 = v;
+    const Id lower = (m_orientation(point(v), point(m_right[e1]), point(m_right[e2])) == CGAL::LEFT_TURN) ? e1 : e2;
+    typename Status::iterator it = m_handles[lower];
+    while(it != m_status->begin() && ring_of(std::prev(it)->id) == r)   // r touching itself here
+      --it;
+    if(it != m_status->begin()) {
+      const Id t = std::prev(it)->id;
+      const Id q = ring_of(t);
+      const bool interior_above = (m_ccw[q] == (m_left[t] == t));
+      if(interior_above) {
+        m_parent[r] = static_cast<long>(q);
+      } else {
+        if(!m_parent_known[q])
+          return false;
+        m_parent[r] = m_parent[q];
+      }
+    }
+    m_parent_known[r] = true;
+    return true;
   }
 
   // ---------------------------------------------------------------- step 8
@@ -510,10 +680,13 @@ private:
 
   std::vector<Id> m_left, m_right;      // edge -> its smaller / larger endpoint
   std::vector<bool> m_ccw;              // ring -> counterclockwise?
+  std::vector<Id> m_smallest;           // ring -> its lexicographically smallest vertex (first in input order)
   std::vector<long> m_parent;           // ring -> directly enclosing ring, or -1
+  std::vector<bool> m_parent_known;     // ring -> m_parent computed?
   Status* m_status = nullptr;
   std::vector<typename Status::iterator> m_handles; // edge -> its place in the status
 
+  bool m_allow_touching;
   mutable Contact m_contact = NO_CONTACT;
   mutable Id m_contact_a = 0, m_contact_b = 0, m_contact_vertex = 0;
 };
@@ -532,7 +705,9 @@ found (edge `i` of a ring goes from vertex `i` to vertex `(i+1) mod` ring size),
 - a ring with fewer than 3 (distinct) vertices;
 - a non-finite coordinate;
 - a zero-length edge (two consecutive equal vertices);
-- a repeated vertex (two equal points anywhere in the polygon, in the same ring or not);
+- a repeated vertex (two equal points anywhere in the polygon, in the same ring or not),
+  unless the polygon has a more serious problem (below), which is then named: rings that
+  touch at a vertex without crossing there are valid for OGC but not supported yet;
 - a spike (two consecutive edges collinear and folding back, angle 0);
 - any intersection or contact between two edges that are not consecutive in the same
   ring (a proper crossing, a vertex lying on another edge, a collinear overlap), whether
@@ -549,7 +724,17 @@ template <class Kernel>
 void validate_polygon_rings(const Rings<typename Kernel::Point_2>& rings)
 {
   internal::Polygon_rings_validator<Kernel> validator(rings);
-  validator.run();
+  try {
+    validator.run();
+  } catch(const Input_error& e) {
+    if(std::string(e.what()).compare(0, 16, "repeated vertex:") != 0)
+      throw;
+    // Rings that touch at a vertex, or worse: a crossing, an overlap, a spike or a
+    // hole outside, which is then the problem to name.
+    internal::Polygon_rings_validator<Kernel>(rings, true).run();
+    throw Input_error(std::string(e.what()) + " (rings touching at a vertex are not supported yet)", e.ring(),
+                      e.vertex());
+  }
 }
 
 /*!
