@@ -16,6 +16,7 @@
 
 #include <CGAL/Progressive_medial_axis_2/internal/Medial_axis_engine.h>
 #include <CGAL/Progressive_medial_axis_2/internal/Curves.h>
+#include <CGAL/Exact_rational.h>
 #include <CGAL/number_utils.h>
 #include <CGAL/enum.h>
 
@@ -210,8 +211,8 @@ public:
       if(x.is_point) return false;
       const auto& a = d_->info[x.p0];
       if(a.next != x.p1) return false;
-      if(ring) *ring = a.ring;
-      if(index) *index = a.reversed ? d_->info[x.p1].index : a.index;
+      if(ring) *ring = a.edge_ring;
+      if(index) *index = a.edge_index;
       return true;
     }
     const Data* d_ = nullptr;
@@ -492,6 +493,7 @@ public:
     for(std::size_t i = 1; i < cycles.size(); ++i)
       if(lexicographically_smaller(min_point(cycles[i]), min_point(cycles[outer]))) outer = i;
     if(!cycles.empty()) std::swap(cycles[0], cycles[outer]);
+    splice_lobes(cycles);
     std::sort(cycles.begin() + (cycles.empty() ? 0 : 1), cycles.end(),
               [](const std::vector<int>& x, const std::vector<int>& y) { return x.front() < y.front(); });
     std::vector<std::vector<Input_vertex> > out;
@@ -527,6 +529,48 @@ private:
   static std::size_t count(const R& r)
   {
     return std::size_t(std::distance(r.begin(), r.end()));
+  }
+
+  // Where the outer ring is pinched (it touches itself at a vertex), the
+  // interior has several parts, each with a counter-clockwise boundary cycle
+  // (a lobe).  A lobe that shares a place with the outer ring (cycles[0]) is
+  // spliced into it there, so that the outer ring passes that place twice,
+  // as the input's ring did.
+  void splice_lobes(std::vector<std::vector<int> >& cycles) const
+  {
+    bool spliced = true;
+    while(spliced && cycles.size() > 1) {
+      spliced = false;
+      for(std::size_t i = 1; i < cycles.size() && !spliced; ++i) {
+        if(!counterclockwise(cycles[i])) continue;
+        std::vector<int>& o = cycles[0];
+        const std::vector<int>& l = cycles[i];
+        for(std::size_t a = 0; a < o.size() && !spliced; ++a)
+          for(std::size_t b = 0; b < l.size() && !spliced; ++b) {
+            if(d_->points[o[a]] != d_->points[l[b]]) continue;
+            // o[0..a-1], the lobe from l[b] round to l[b-1], then o[a..]: the
+            // ring enters the place from o[a-1] and leaves along the lobe, so
+            // that each edge starts at the corner that is its source
+            std::vector<int> joined(o.begin(), o.begin() + std::ptrdiff_t(a));
+            for(std::size_t k = 0; k < l.size(); ++k) joined.push_back(l[(b + k) % l.size()]);
+            joined.insert(joined.end(), o.begin() + std::ptrdiff_t(a), o.end());
+            o.swap(joined);
+            cycles.erase(cycles.begin() + std::ptrdiff_t(i));
+            spliced = true;
+          }
+      }
+    }
+  }
+  // The sign of the area of a cycle (exact for points of doubles).
+  bool counterclockwise(const std::vector<int>& c) const
+  {
+    CGAL::Exact_rational twice_area = 0;
+    for(std::size_t k = 0; k < c.size(); ++k) {
+      const auto p = to_xy(d_->points[c[k]]), q = to_xy(d_->points[c[(k + 1) % c.size()]]);
+      twice_area += CGAL::Exact_rational(p.first) * CGAL::Exact_rational(q.second) -
+                    CGAL::Exact_rational(p.second) * CGAL::Exact_rational(q.first);
+    }
+    return CGAL::sign(twice_area) == CGAL::POSITIVE;
   }
 
   bool lexicographically_smaller(int a, int b) const

@@ -723,18 +723,7 @@ predicates `Kernel::Orientation_2` and `Kernel::Compare_xy_2` (exact with
 template <class Kernel>
 void validate_polygon_rings(const Rings<typename Kernel::Point_2>& rings)
 {
-  internal::Polygon_rings_validator<Kernel> validator(rings);
-  try {
-    validator.run();
-  } catch(const Input_error& e) {
-    if(std::string(e.what()).compare(0, 16, "repeated vertex:") != 0)
-      throw;
-    // Rings that touch at a vertex, or worse: a crossing, an overlap, a spike or a
-    // hole outside, which is then the problem to name.
-    internal::Polygon_rings_validator<Kernel>(rings, true).run();
-    throw Input_error(std::string(e.what()) + " (rings touching at a vertex are not supported yet)", e.ring(),
-                      e.vertex());
-  }
+  internal::Polygon_rings_validator<Kernel>(rings, true).run();
 }
 
 /*!

@@ -156,7 +156,8 @@ public:
         if(h != NO_INDEX) h += offsets[std::size_t(part_[std::size_t(t)])].halfedge;
     for(std::size_t p = 1; p < P; ++p) {
       const int r = roots_[p];
-      merge_along(engine_, parent_[std::size_t(r)], r, counts);
+      if(parent_[std::size_t(r)] != NO_INDEX)   // (the first part of a connected part has none)
+        merge_along(engine_, parent_[std::size_t(r)], r, counts);
     }
     // 3. the hole-closing diagonals between parts (those inside a part were
     // merged by the part)
@@ -179,9 +180,15 @@ private:
     order_.clear();
     order_.reserve(std::size_t(T));
     std::vector<char> seen(std::size_t(T), 0);
-    seen[0] = 1;
-    order_.push_back(0);
-    for(std::size_t i = 0; i < order_.size(); ++i) {
+    // a spanning forest: one tree per connected part of the interior (several
+    // where the outer ring is pinched, touching itself at a vertex)
+    int next_root = 0;
+    for(std::size_t i = 0; i < std::size_t(T); ++i) {
+      if(i == order_.size()) {
+        while(seen[std::size_t(next_root)]) ++next_root;
+        seen[std::size_t(next_root)] = 1;
+        order_.push_back(next_root);
+      }
       const int t = order_[i];
       for(int e = 0; e < 3; ++e) {
         const int u = triangles_[std::size_t(t)].nbr[e];
@@ -206,10 +213,9 @@ private:
     const int target = (std::max)(1, int((std::size_t(T) + parts - 1) / parts));
     std::vector<int> size(std::size_t(T), 1);
     std::vector<char> is_root(std::size_t(T), 0);
-    is_root[0] = 1;
-    for(std::size_t i = order_.size(); i-- > 1;) {
+    for(std::size_t i = order_.size(); i-- > 0;) {
       const int t = order_[i];
-      if(size[std::size_t(t)] >= target)
+      if(parent_[std::size_t(t)] == NO_INDEX || size[std::size_t(t)] >= target)
         is_root[std::size_t(t)] = 1;
       else
         size[std::size_t(parent_[std::size_t(t)])] += size[std::size_t(t)];

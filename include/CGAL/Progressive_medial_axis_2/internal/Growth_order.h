@@ -48,12 +48,40 @@ class Growth_order
 {
 public:
   /// `start` is the first triangle (step 0).
-  Growth_order(const std::vector<Triangle>& tris, std::size_t number_of_points, int start)
+  /// `place[i]` is the first input point at the place of point i (rings
+  /// touch where it is not i): a part of the interior that the growth could
+  /// not reach through triangle sides starts next to a place it reached.
+  Growth_order(const std::vector<Triangle>& tris, std::size_t number_of_points, int start,
+               const std::vector<int>& place = std::vector<int>())
     : tris_(tris), added_(tris.size(), 0), runs_(number_of_points, 0)
   {
     steps_.push_back(std::vector<int>());
     add(start);
-    while(!queue_.empty()) {
+    std::size_t next_start = 0;
+    for(;;) {
+      if(queue_.empty()) {
+        // another connected part of the interior (the outer ring is pinched):
+        // a step that starts it with a triangle of its own
+        while(next_start < tris_.size() && added_[next_start]) ++next_start;
+        if(next_start == tris_.size()) break;
+        int t = int(next_start);
+        if(!place.empty()) {
+          std::vector<char> reached(number_of_points, 0);
+          for(std::size_t u = 0; u < tris_.size(); ++u)
+            if(added_[u])
+              for(int i = 0; i < 3; ++i) reached[std::size_t(place[std::size_t(tris_[u].v[i])])] = 1;
+          for(std::size_t u = next_start; u < tris_.size(); ++u)
+            if(!added_[u] && (reached[std::size_t(place[std::size_t(tris_[u].v[0])])] ||
+                              reached[std::size_t(place[std::size_t(tris_[u].v[1])])] ||
+                              reached[std::size_t(place[std::size_t(tris_[u].v[2])])])) {
+              t = int(u);
+              break;
+            }
+        }
+        steps_.push_back(std::vector<int>());
+        add(t);
+        continue;
+      }
       int t = queue_.front();
       queue_.pop_front();
       for(int e = 0; e < 3; ++e) {

@@ -26,6 +26,9 @@
 #include <CGAL/Polygon_with_holes_2.h>
 #include <CGAL/enum.h>
 
+#include <CGAL/assertions.h>
+
+#include <algorithm>
 #include <iterator>
 #include <type_traits>
 #include <vector>
@@ -105,6 +108,99 @@ std::vector<std::vector<typename K::Point_2> > rings_of(const Ring_range& rings)
   return out;
 }
 
+/*
+  Where rings touch (the validation allows it: OGC holes touching the outer
+  ring or each other, pinches, inverted islands), m input points lie at one
+  place P.  The 2m edges at P bound m interior sectors (wedges) and m
+  exterior ones, alternately.  Each interior sector becomes a corner of its
+  own: an input point at P, whose `next` is the edge leaving P on the
+  sector's clockwise side and whose predecessor is the edge entering P on
+  its counterclockwise side.  The boundary cycles are thus re-linked at P,
+  the edges themselves (and their ids, kept in `edge_ring`, `edge_index`)
+  unchanged.  The sector that is reflex, if any (at most one: the angles add
+  up to at most 2 pi), gets the first of the points in input order, so that
+  its point generator is named after the first place the coordinates occur.
+  Invariant: every input point is the corner of exactly one interior sector,
+  and `next` is a permutation whose cycles are the boundary of the interior
+  traversed with the interior on the left; distinct corners may share
+  coordinates, but never a sector.  The triangulation gives each triangle
+  at P the corner of its sector (triangulate_rings()).
+*/
+template <class Data, class Orientation>
+void link_touching_corners(Data& data, const Orientation& orientation)
+{
+  typedef typename std::remove_reference<decltype(data.points[0])>::type Point;
+  const int n = int(data.points.size());
+  std::vector<int> order(std::size_t(n), 0);
+  for(int i = 0; i < n; ++i) order[std::size_t(i)] = i;
+  auto less_xy = [&](int a, int b) {
+    const Point& p = data.points[std::size_t(a)];
+    const Point& q = data.points[std::size_t(b)];
+    return p.x() < q.x() || (p.x() == q.x() && (p.y() < q.y() || (p.y() == q.y() && a < b)));
+  };
+  std::sort(order.begin(), order.end(), less_xy);
+  std::vector<int> prev;
+  for(int k = 0; k < n;) {
+    int end = k + 1;
+    const Point& p = data.points[std::size_t(order[std::size_t(k)])];
+    while(end < n && data.points[std::size_t(order[std::size_t(end)])] == p) ++end;
+    if(end - k == 1) {
+      k = end;
+      continue;
+    }
+    if(prev.empty()) {   // predecessors along the cycles, once
+      prev.assign(std::size_t(n), -1);
+      for(int i = 0; i < n; ++i) prev[std::size_t(data.info[std::size_t(i)].next)] = i;
+    }
+    // the edges at P: (the other end, the point at P, outgoing?), counterclockwise
+    struct Ray { int to, at; bool outgoing; };
+    std::vector<Ray> rays;
+    std::vector<int> here;
+    for(int j = k; j < end; ++j) {
+      const int g = order[std::size_t(j)];
+      here.push_back(g);
+      rays.push_back(Ray{data.info[std::size_t(g)].next, g, true});
+      rays.push_back(Ray{prev[std::size_t(g)], g, false});
+    }
+    auto upper = [&](const Point& q) {
+      return q.y() > p.y() || (q.y() == p.y() && q.x() > p.x());
+    };
+    std::sort(rays.begin(), rays.end(), [&](const Ray& a, const Ray& b) {
+      const Point& qa = data.points[std::size_t(a.to)];
+      const Point& qb = data.points[std::size_t(b.to)];
+      const bool ua = upper(qa), ub = upper(qb);
+      if(ua != ub) return ua;
+      return orientation(p, qa, qb) == LEFT_TURN;
+    });
+    // sectors: an outgoing edge and the incoming edge counterclockwise after it
+    struct Sector { int out_to, out_edge_ring, out_edge_index, in_from; bool reflex; };
+    std::vector<Sector> sectors;
+    const std::size_t m = rays.size();
+    for(std::size_t i = 0; i < m; ++i) {
+      if(!rays[i].outgoing) continue;
+      const Ray& in = rays[(i + 1) % m];
+      CGAL_assertion(!in.outgoing);
+      const Point_info& from = data.info[std::size_t(rays[i].at)];
+      sectors.push_back(Sector{rays[i].to, from.edge_ring, from.edge_index, in.to,
+                               orientation(p, data.points[std::size_t(rays[i].to)],
+                                           data.points[std::size_t(in.to)]) == RIGHT_TURN});
+    }
+    std::stable_sort(sectors.begin(), sectors.end(), [](const Sector& a, const Sector& b) { return a.reflex > b.reflex; });
+    std::sort(here.begin(), here.end());
+    for(std::size_t s = 0; s < sectors.size(); ++s) {
+      const int c = here[s];
+      Point_info& info = data.info[std::size_t(c)];
+      info.next = sectors[s].out_to;
+      info.edge_ring = sectors[s].out_edge_ring;
+      info.edge_index = sectors[s].out_edge_index;
+      data.info[std::size_t(sectors[s].in_from)].next = c;
+      prev[std::size_t(sectors[s].out_to)] = c;   // (for the places still to come)
+      prev[std::size_t(c)] = sectors[s].in_from;
+    }
+    k = end;
+  }
+}
+
 /// Fills the points of `data`: ring by ring, with each point's ring,
 /// index and successor along the ring with the interior on its left (the
 /// outer ring counter-clockwise, holes clockwise; the orientation of a
@@ -134,9 +230,12 @@ void set_points(Data& data, const std::vector<std::vector<Point_2> >& rings, con
       info.index = i;
       info.reversed = reversed;
       info.next = reversed ? base + (i + m - 1) % m : base + (i + 1) % m;
+      info.edge_ring = int(r);
+      info.edge_index = reversed ? (i + m - 1) % m : i;
     }
   }
   data.ring_start.push_back(int(data.points.size()));
+  link_touching_corners(data, orientation);
 }
 
 // The kernel of the points of an input.

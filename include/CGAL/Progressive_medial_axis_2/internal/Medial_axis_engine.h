@@ -45,6 +45,9 @@ struct Point_info {
   int ring = -1, index = -1;
   int next = -1;
   bool reversed = false;  // the ring was given in the other orientation
+  // the input edge from this point to `next` (ring, index as written); where
+  // rings touch, `next` joins the corners of the interior (see set_points())
+  int edge_ring = -1, edge_index = -1;
 };
 
 /// The data of a medial axis: the input points and the half-edge structure.

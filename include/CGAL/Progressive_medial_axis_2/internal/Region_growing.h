@@ -27,6 +27,7 @@
 
 #include <array>
 #include <cstddef>
+#include <algorithm>
 #include <vector>
 
 namespace CGAL {
@@ -44,8 +45,8 @@ public:
     : engine_(engine)
   {
     const auto& data = engine.data();
-    triangles_ = triangulate_rings<typename Traits::Kernel>(data.points, data.ring_start);
-    steps_ = Growth_order(triangles_, data.points.size(), largest_triangle()).steps();
+    triangles_ = triangulate_rings<typename Traits::Kernel>(data.points, data.ring_start, data.info);
+    steps_ = Growth_order(triangles_, data.points.size(), largest_triangle(), places(data.points)).steps();
     added_.assign(triangles_.size(), 0);
     sides_.assign(triangles_.size(), std::array<int, 3>{{NO_INDEX, NO_INDEX, NO_INDEX}});
   }
@@ -76,7 +77,12 @@ public:
       int shared[3], ns = 0;
       for(int e = 0; e < 3; ++e)
         if(T.nbr[e] >= 0 && added_[T.nbr[e]]) shared[ns++] = e;
-      CGAL_assertion(ns > 0);
+      if(ns == 0) {   // the first triangle of another connected part of the interior
+        const int none[3] = {NO_INDEX, NO_INDEX, NO_INDEX};
+        sides_[t] = engine_.add_triangle(T.v, none);
+        added_[t] = 1;
+        continue;
+      }
       // placed at the corners of the grown shape along the first shared side
       const int first = T.nbr[shared[0]];
       sides_[t] = engine_.add_triangle_across(T.v, shared[0], sides_[first][side_towards(triangles_, first, t)]);
@@ -92,6 +98,27 @@ public:
   }
 
 private:
+  // The first point at the place of each point (empty if no two points share one).
+  template <class Point>
+  static std::vector<int> places(const std::vector<Point>& points)
+  {
+    std::vector<int> order(points.size());
+    for(std::size_t i = 0; i < order.size(); ++i) order[i] = int(i);
+    std::sort(order.begin(), order.end(), [&](int a, int b) {
+      const Point &p = points[std::size_t(a)], &q = points[std::size_t(b)];
+      return p.x() < q.x() || (p.x() == q.x() && (p.y() < q.y() || (p.y() == q.y() && a < b)));
+    });
+    std::vector<int> place(points.size());
+    bool shared = false;
+    for(std::size_t k = 0; k < order.size(); ++k) {
+      const bool same = k > 0 && points[std::size_t(order[k])] == points[std::size_t(order[k - 1])];
+      place[std::size_t(order[k])] = same ? place[std::size_t(order[k - 1])] : order[k];
+      shared = shared || same;
+    }
+    if(!shared) place.clear();
+    return place;
+  }
+
   // The triangle of largest area: the start of the growth.
   int largest_triangle() const
   {

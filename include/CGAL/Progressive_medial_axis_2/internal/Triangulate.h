@@ -22,8 +22,10 @@
 #include <CGAL/number_utils.h>
 #include <CGAL/Progressive_medial_axis_2/Input_error.h>
 #include <CGAL/Progressive_medial_axis_2/internal/Input_conversion.h>
+#include <CGAL/Progressive_medial_axis_2/internal/Medial_axis_engine.h>
 
 #include <deque>
+#include <map>
 #include <string>
 #include <utility>
 #include <vector>
@@ -54,7 +56,7 @@ inline int side_towards(const std::vector<Triangle>& triangles, int u, int t)
 /// points stay distinct.
 template <class Kernel>
 std::vector<Triangle> triangulate_rings(const std::vector<typename Kernel::Point_2>& points,
-                                        const std::vector<int>& ring_start)
+                                        const std::vector<int>& ring_start, const std::vector<Point_info>& info)
 {
   typedef Exact_predicates_kernel_for<Kernel> TK;
   typedef typename TK::type K;
@@ -73,11 +75,16 @@ std::vector<Triangle> triangulate_rings(const std::vector<typename Kernel::Point
   std::vector<typename CDT::Vertex_handle> handle(points.size());
   for(auto v = cdt.finite_vertices_begin(); v != cdt.finite_vertices_end(); ++v)
     handle[v->info()] = v;
-  // two input points at one place (possible only when the validation was
-  // skipped): the triangulation keeps one of them
+  // input points at one place (where rings touch): the triangulation keeps
+  // one of them; the triangles get the corner of their sector below
+  std::map<typename CDT::Vertex_handle, std::vector<int> > touching;
   for(std::size_t i = 0; i < points.size(); ++i)
-    if(handle[i] == typename CDT::Vertex_handle())
-      throw Input_error("repeated vertex (input not validated): input point " + std::to_string(i));
+    if(handle[i] == typename CDT::Vertex_handle()) {
+      handle[i] = cdt.insert(pts[i].first);
+      std::vector<int>& at = touching[handle[i]];
+      if(at.empty()) at.push_back(handle[i]->info());
+      at.push_back(int(i));
+    }
   for(std::size_t r = 0; r + 1 < ring_start.size(); ++r) {
     int b = ring_start[r], e = ring_start[r + 1];
     for(int i = b; i < e; ++i)
@@ -125,11 +132,27 @@ std::vector<Triangle> triangulate_rings(const std::vector<typename Kernel::Point
     }
   }
   tris.resize(count);
+  // The corner of the sector of face f at its vertex i, a place where rings
+  // touch: turning clockwise about it, the first constrained edge leads to the
+  // successor of that corner (see link_touching_corners()).
+  auto corner = [&](typename CDT::Face_handle f, int i) {
+    const typename CDT::Vertex_handle v = f->vertex(i);
+    const std::vector<int>& at = touching.at(v);
+    while(!cdt.is_constrained(std::make_pair(f, CDT::cw(i)))) {
+      f = f->neighbor(CDT::cw(i));
+      i = f->index(v);
+    }
+    const typename CDT::Vertex_handle w = f->vertex(CDT::ccw(i));
+    for(int c : at)
+      if(handle[std::size_t(info[std::size_t(c)].next)] == w) return c;
+    CGAL_assertion_msg(false, "no corner for the sector");
+    return at.front();
+  };
   for(auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f) {
     if(f->info() > -2) continue;
     Triangle& t = tris[-2 - f->info()];
     for(int i = 0; i < 3; ++i) {
-      t.v[i] = f->vertex(i)->info();
+      t.v[i] = touching.empty() || !touching.count(f->vertex(i)) ? f->vertex(i)->info() : corner(f, i);
       auto n = f->neighbor(i);
       bool inside = !cdt.is_infinite(n) && n->info() <= -2;
       t.nbr[i] = (inside && !cdt.is_constrained(std::make_pair(f, i))) ? -2 - n->info() : -1;

@@ -74,8 +74,13 @@
 // that uses CORE::Expr or Gmpfr.
 //
 // Preconditions (not checked, except as noted): the rings form a valid polygon with holes
-// (simple rings, pairwise disjoint, holes inside the outer ring, not nested). Checked: at
-// least 3 vertices per ring, all vertices distinct, no spike; violations throw
+// (rings pairwise disjoint except at shared vertices, holes inside the outer ring, not
+// nested). Rings may touch themselves and each other at vertices (OGC touching holes,
+// pinches, inverted islands): the SDG then has one point site there, named after the first
+// vertex at that place in input order, a generator if one of the interior sectors there
+// is reflex; such a point does not vote inside/outside (its faces are classified by their
+// segments), and the checks on the corner bisectors skip it. Checked: at least 3 vertices
+// per ring, no spike, no crossing at a shared vertex; violations throw
 // std::invalid_argument. Coordinates are converted with CGAL::to_double (inputs whose
 // coordinates are not doubles are rounded).
 
@@ -85,6 +90,7 @@
 #include <CGAL/CORE_Expr.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Gmpfr.h>
+#include <CGAL/Gmpq.h>
 #include <CGAL/Segment_Delaunay_graph_2.h>
 #include <CGAL/Segment_Delaunay_graph_filtered_traits_2.h>
 #include <CGAL/Segment_Delaunay_graph_traits_2.h>
@@ -242,6 +248,13 @@ struct Polygon_data
   std::vector<EPoint> pts;
   std::vector<int> ring, index, next, prev;
   std::vector<int> turn;            // +1 convex, -1 reflex, 0 flat (w.r.t. the interior)
+  // Where rings touch (several vertices at one place): rep[g] is the first vertex at g's
+  // place (input order), touching[g] whether there are several, and place_turn[g] the
+  // turn of the place: -1 if one of its interior sectors is reflex (the point is then a
+  // generator, named after rep), +1 otherwise.  Elsewhere rep[g] == g and
+  // place_turn[g] == turn[g].
+  std::vector<int> rep, place_turn;
+  std::vector<char> touching;
   std::vector<int> ring_offset;     // first global index of each ring
   std::vector<char> left_interior;  // per ring: polygon interior on the left of its edges
   double bbox_diagonal = 0;
@@ -291,19 +304,21 @@ Polygon_data make_polygon_data(const std::vector<std::vector<Point_2> >& rings)
   P.max_abs_coordinate = (std::max)((std::max)(std::abs(xmin), std::abs(xmax)),
                                     (std::max)(std::abs(ymin), std::abs(ymax)));
 
-  // Orientation of each ring, exactly: the lexicographically smallest vertex is a strictly
-  // convex vertex of the ring's own region, so the turn there is the ring's orientation.
+  // Orientation of each ring, exactly, from the sign of its area (a ring may touch
+  // itself, at its smallest vertex too).
   for(std::size_t r = 0; r < rings.size(); ++r) {
     const int off = P.ring_offset[r];
     const int n = static_cast<int>(rings[r].size());
-    int m = off;
-    for(int g = off; g < off + n; ++g)
-      if(CGAL::compare_xy(P.pts[g], P.pts[m]) == CGAL::SMALLER) m = g;
-    const CGAL::Orientation o = CGAL::orientation(P.pts[P.prev[m]], P.pts[m], P.pts[P.next[m]]);
-    if(o == CGAL::COLLINEAR)
+    CGAL::Gmpq twice_area = 0;
+    for(int g = off; g < off + n; ++g) {
+      const EPoint& a = P.pts[g];
+      const EPoint& b = P.pts[P.next[g]];
+      twice_area += CGAL::Gmpq(a.x()) * CGAL::Gmpq(b.y()) - CGAL::Gmpq(a.y()) * CGAL::Gmpq(b.x());
+    }
+    if(CGAL::sign(twice_area) == CGAL::ZERO)
       throw std::invalid_argument("sdg_oracle: ring " + std::to_string(r) +
                                   " is degenerate (no orientation)");
-    const bool ccw = (o == CGAL::LEFT_TURN);
+    const bool ccw = CGAL::sign(twice_area) == CGAL::POSITIVE;
     P.left_interior.push_back(r == 0 ? ccw : !ccw);
   }
 
@@ -323,6 +338,48 @@ Polygon_data make_polygon_data(const std::vector<std::vector<Point_2> >& rings)
     } else {
       const bool left = (o == CGAL::LEFT_TURN);
       P.turn[g] = (left == static_cast<bool>(P.left_interior[P.ring[g]])) ? 1 : -1;
+    }
+  }
+
+  // Places where rings touch: the edges there, sorted by angle, bound interior and
+  // exterior sectors alternately (the polygon is valid); the interior sector after an
+  // edge (counterclockwise) is reflex if the next edge turns right from it.
+  std::map<std::pair<double, double>, std::vector<int> > at;
+  for(std::size_t g = 0; g < P.pts.size(); ++g) at[std::make_pair(P.pts[g].x(), P.pts[g].y())].push_back(int(g));
+  P.rep.resize(P.pts.size());
+  P.touching.assign(P.pts.size(), 0);
+  P.place_turn = P.turn;
+  for(const auto& kv : at) {
+    const std::vector<int>& gs = kv.second;   // increasing
+    for(int g : gs) P.rep[g] = gs.front();
+    if(gs.size() < 2) continue;
+    const EPoint& p = P.pts[gs.front()];
+    struct Ray { int to; bool interior_after; };
+    std::vector<Ray> rays;
+    for(int g : gs) {
+      const bool left = P.left_interior[P.ring[g]];
+      rays.push_back(Ray{P.next[g], left});    // along the ring: interior on the left if left
+      rays.push_back(Ray{P.prev[g], !left});   // against it
+    }
+    auto upper = [&](const EPoint& q) {
+      return q.y() > p.y() || (q.y() == p.y() && q.x() > p.x());
+    };
+    std::sort(rays.begin(), rays.end(), [&](const Ray& a, const Ray& b) {
+      const bool ua = upper(P.pts[a.to]), ub = upper(P.pts[b.to]);
+      if(ua != ub) return ua;
+      return CGAL::orientation(p, P.pts[a.to], P.pts[b.to]) == CGAL::LEFT_TURN;
+    });
+    int turn = 1;
+    for(std::size_t i = 0; i < rays.size(); ++i) {
+      const Ray& a = rays[i];
+      const Ray& b = rays[(i + 1) % rays.size()];
+      if(a.interior_after == b.interior_after)
+        throw std::invalid_argument("sdg_oracle: rings cross at a shared vertex");
+      if(a.interior_after && CGAL::orientation(p, P.pts[a.to], P.pts[b.to]) == CGAL::RIGHT_TURN) turn = -1;
+    }
+    for(int g : gs) {
+      P.touching[g] = 1;
+      P.place_turn[g] = turn;
     }
   }
   return P;
@@ -420,11 +477,13 @@ private:
       segs.push_back(std::make_pair(g, static_cast<std::size_t>(P.next[g])));
     sdg.insert_segments(points, segs.begin(), segs.end());
     stats.sdg_vertices = sdg.number_of_vertices();
-    if(sdg.number_of_vertices() != 2 * P.pts.size())
+    std::size_t places = 0;
+    for(std::size_t g = 0; g < P.pts.size(); ++g) places += (P.rep[g] == int(g));
+    if(sdg.number_of_vertices() != places + P.pts.size())
       throw std::invalid_argument(
         "sdg_oracle: the segment Delaunay graph has " +
         std::to_string(sdg.number_of_vertices()) + " sites instead of " +
-        std::to_string(2 * P.pts.size()) + " (duplicate vertices or overlapping edges?)");
+        std::to_string(places + P.pts.size()) + " (overlapping edges?)");
     if(sdg.dimension() != 2)
       throw std::invalid_argument("sdg_oracle: degenerate input (SDG dimension < 2)");
   }
@@ -432,13 +491,13 @@ private:
   // ---------------------------------------------------------------- sites
   void map_sites()
   {
-    std::map<std::pair<double, double>, int> vertex_at;
+    std::map<std::pair<double, double>, int> vertex_at;   // the first vertex at each place
+    for(std::size_t g = 0; g < P.pts.size(); ++g)
+      vertex_at.emplace(std::make_pair(P.pts[g].x(), P.pts[g].y()), P.rep[g]);
+    std::map<std::pair<int, int>, int> edge_between;     // places of the ends -> the edge
     for(std::size_t g = 0; g < P.pts.size(); ++g) {
-      if(!vertex_at.emplace(std::make_pair(P.pts[g].x(), P.pts[g].y()), static_cast<int>(g))
-            .second)
-        throw std::invalid_argument("sdg_oracle: duplicate vertex " +
-                                    std::to_string(P.index[g]) + " of ring " +
-                                    std::to_string(P.ring[g]));
+      edge_between[std::make_pair(P.rep[g], P.rep[P.next[g]])] = static_cast<int>(g);
+      edge_between[std::make_pair(P.rep[P.next[g]], P.rep[g])] = static_cast<int>(g);
     }
     auto lookup = [&](const Gt::Point_2& p) {
       auto it = vertex_at.find(std::make_pair(p.x(), p.y()));
@@ -458,7 +517,7 @@ private:
         info.is_point = true;
         info.g = lookup(s.point());
         info.src = info.tgt = info.g;
-        info.generator = P.turn[info.g] < 0;
+        info.generator = P.place_turn[info.g] < 0;
         info.id = P.vertex_id(info.g);
         if(point_vertex[info.g] != SDG::Vertex_handle())
           throw std::logic_error("sdg_oracle: point site twice");
@@ -467,9 +526,9 @@ private:
         info.is_point = false;
         info.src = lookup(s.source());
         info.tgt = lookup(s.target());
-        if(P.next[info.src] == info.tgt) info.g = info.src;
-        else if(P.next[info.tgt] == info.src) info.g = info.tgt;
-        else throw std::logic_error("sdg_oracle: segment site is not a polygon edge");
+        const auto e = edge_between.find(std::make_pair(info.src, info.tgt));
+        if(e == edge_between.end()) throw std::logic_error("sdg_oracle: segment site is not a polygon edge");
+        info.g = e->second;
         info.generator = true;
         info.id = P.edge_id(info.g);
         if(seen_edge[info.g]++) throw std::logic_error("sdg_oracle: segment site twice");
@@ -532,7 +591,7 @@ private:
       if(S.is_point) continue;
       const SDG::Vertex_handle vsrc = point_vertex[S.src], vtgt = point_vertex[S.tgt];
       // interior side: left of the polygon direction g -> next[g] iff left_interior
-      const bool polygon_dir = (S.src == S.g);
+      const bool polygon_dir = (S.src == P.rep[S.g]);
       const bool left_is_interior = (static_cast<bool>(P.left_interior[P.ring[S.g]]) == polygon_dir);
 
       SDG::Face_handle start_tgt, start_src;
@@ -583,7 +642,8 @@ private:
         const Site_info& S = sites[F.site[k]];
         int ck = UNKNOWN;
         if(S.is_point) {
-          if(P.turn[S.g] != 0) ck = (P.turn[S.g] < 0) ? INSIDE : OUTSIDE;
+          // (where rings touch, a point has interior and exterior sectors: no vote)
+          if(P.turn[S.g] != 0 && !P.touching[S.g]) ck = (P.turn[S.g] < 0) ? INSIDE : OUTSIDE;
         } else {
           if(F.side[k] == 0)
             throw std::logic_error("sdg_oracle: face without a side for segment " + S.id);
@@ -922,7 +982,7 @@ private:
         int common = -1;
         if(P.next[A.g] == B.g) common = B.g;
         else if(P.next[B.g] == A.g) common = A.g;
-        if(common >= 0) {
+        if(common >= 0 && !P.touching[common]) {
           if(P.turn[common] == 0) continue; // flat vertex: no medial curve
           if(inside != (P.turn[common] > 0))
             throw std::logic_error("sdg_oracle: bisector of " + A.id + " and " + B.id +
@@ -948,6 +1008,7 @@ private:
     for(const Oracle_edge& e : G.edges) ++count[std::make_pair(e.a, e.b)];
     const bool has_holes = P.ring_offset.size() > 1;
     for(std::size_t g = 0; g < P.pts.size(); ++g) {
+      if(P.touching[g]) continue;   // (the edges of a vertex where rings touch may bound no sector)
       std::string a = P.edge_id(P.prev[g]), b = P.edge_id(static_cast<int>(g));
       if(b < a) std::swap(a, b);
       auto it = count.find(std::make_pair(a, b));
