@@ -1,6 +1,6 @@
 # The medial axis against the Segment_Delaunay_graph_2 oracle.
 pma_add_test_program(test_medial_axis_oracle)
-add_test(NAME oracle_filtered COMMAND test_medial_axis_oracle --only regressions,random,holes,data)
+add_test(NAME oracle_filtered COMMAND test_medial_axis_oracle --only regressions,random,holes,data,touching)
 # Degenerate input (integer grids, Hilbert, Koch, regular polygons, glyphs):
 # every exact tie decided, against the oracle.
 add_test(NAME oracle_degenerate COMMAND test_medial_axis_oracle --only degenerate)

@@ -123,7 +123,14 @@ public:
       }
     }
     const Rings& oracle_rings = input_names ? input : shape;
-    pma_test::Oracle_result oracle = pma_test::sdg_medial_axis(oracle_rings);
+    pma_test::Oracle_result oracle;
+    try {
+      oracle = pma_test::sdg_medial_axis(oracle_rings);
+    } catch(const std::invalid_argument& e) {
+      CHECK(false, what << " step " << step << ": the oracle rejects the shape: " << e.what() << "\n  shape: "
+                        << wkt(oracle_rings));
+      return false;
+    }
     std::vector<pma_test::Oracle_curve> ours;
     for(const auto& c : pma_tool::named_curves(ma, names))
       ours.push_back(pma_test::Oracle_curve{c.a, c.b, c.length});
@@ -131,9 +138,15 @@ public:
     const int before = pma_test::failures();
     CHECK(diff.ok(), what << " step " << step << ": pairs differ from the oracle (ours | oracle)\n"
                           << diff.report() << "  shape: " << wkt(oracle_rings));
-    check_invariants(ma, step, what, shape_xy, oracle.bbox_diagonal, int(shape.size()) - 1);
+    // Where rings touch, the interior may have several parts and a hole touching
+    // another ring adds no cycle: the topological checks below assume neither.
+    std::vector<std::pair<double, double> > all;
+    for(const auto& r : shape_xy) all.insert(all.end(), r.begin(), r.end());
+    std::sort(all.begin(), all.end());
+    const bool touching = std::adjacent_find(all.begin(), all.end()) != all.end();
+    check_invariants(ma, step, what, shape_xy, oracle.bbox_diagonal, int(shape.size()) - 1, !touching);
     check_inscribed_circle(ma, step, what, oracle, shape_xy);
-    if(input_names) check_pruning(ma, step, what, int(shape.size()) - 1);
+    if(input_names && !touching) check_pruning(ma, step, what, int(shape.size()) - 1);
     ++comparisons;
     return pma_test::failures() == before;
   }
@@ -177,7 +190,7 @@ public:
 
   void check_invariants(const MA& ma, const std::string& step, const std::string& what,
                         const std::vector<std::vector<std::pair<double, double> > >& shape,
-                        double diagonal, int holes)
+                        double diagonal, int holes, bool topology = true)
   {
     // The medial axis is connected and has one independent cycle per hole.
     typedef typename MA::Vertex_handle Vertex;
@@ -196,8 +209,8 @@ public:
     }
     for(const auto& v : ma.vertices())
       if(find(v) == v) ++components;
-    CHECK(components == 1, what << " step " << step << ": the axis has " << components << " components");
-    CHECK(long(ne) - long(nv) + 1 == holes,
+    CHECK(!topology || components == 1, what << " step " << step << ": the axis has " << components << " components");
+    CHECK(!topology || long(ne) - long(nv) + 1 == holes,
           what << " step " << step << ": the axis has " << (long(ne) - long(nv) + 1)
                << " independent cycles, the shape " << holes << " holes");
 
@@ -435,6 +448,66 @@ void degenerate_tests(Checker<Traits>& checker, const Options& o)
   std::cout << "degenerate: " << shapes.size() << " shapes\n";
 }
 
+// Rings touching at vertices: the shapes of data/touching (synthetic, and real
+// outlines with such vertices), and random square shells (a vertex every 2
+// units) with diamond holes in the cells of a lattice of spacing 4, which touch
+// each other and the shell at vertices.  (Known limitation: where holes alone
+// enclose a part of the interior, the shape of a progressive step is not one
+// polygon, and shape_rings() gives that part as a hole.)
+template <class Traits>
+void touching_tests(Checker<Traits>& checker, const Options& o)
+{
+  std::size_t count = 0;
+  for(const std::string& f : list_wkt(std::string(PMA_TEST_DATA) + "/touching")) {
+    Rings rings = pma_tool::read_polygon_file<Point>(f);
+    std::size_t n = 0;
+    for(const auto& r : rings) n += r.size();
+    if(n < 1000) run_polygon(checker, rings, f, true);
+    else run_polygon(checker, rings, f, false, {0.25, 0.5, 0.75});
+    ++count;
+  }
+  const int seeds = o.quick ? 30 : 150;
+  for(int seed = 0; seed < seeds; ++seed) {
+    pma_test::random_detail::Rng rng(std::uint64_t(7919 * seed + 1));
+    const int cells = 4 + int(rng.below(5));   // the shell is cells x cells cells of side 4
+    Rings rings(1);
+    const int side = 4 * cells;
+    for(int i = 0; i < 2 * cells; ++i) rings[0].push_back(Point(2 * i, 0));
+    for(int i = 0; i < 2 * cells; ++i) rings[0].push_back(Point(side, 2 * i));
+    for(int i = 0; i < 2 * cells; ++i) rings[0].push_back(Point(side - 2 * i, side));
+    for(int i = 0; i < 2 * cells; ++i) rings[0].push_back(Point(0, side - 2 * i));
+    std::vector<char> used(std::size_t(cells * cells), 0);
+    const int holes = 1 + int(rng.below(std::uint64_t(cells * cells / 2)));
+    for(int h = 0; h < holes; ++h) {
+      const int c = int(rng.below(std::uint64_t(cells * cells)));
+      if(used[std::size_t(c)]) continue;
+      // no 2 x 2 block of diamonds: it would enclose a part of the interior by holes
+      // alone, which a progressive step's shape cannot write as one polygon
+      const int ci = c % cells, cj = c / cells;
+      auto full = [&](int i, int j) {
+        if(i < 0 || j < 0 || i + 1 >= cells || j + 1 >= cells) return false;
+        for(int a = 0; a < 2; ++a)
+          for(int b = 0; b < 2; ++b) {
+            const int d = (j + b) * cells + i + a;
+            if(d != c && !used[std::size_t(d)]) return false;
+          }
+        return true;
+      };
+      if(full(ci - 1, cj - 1) || full(ci, cj - 1) || full(ci - 1, cj) || full(ci, cj)) continue;
+      used[std::size_t(c)] = 1;
+      const double x = 4 * (c % cells), y = 4 * (c / cells);
+      rings.push_back({Point(x + 2, y), Point(x + 4, y + 2), Point(x + 2, y + 4), Point(x, y + 2)});
+      if(rng.below(2)) std::reverse(rings.back().begin(), rings.back().end());
+    }
+    const std::string name = "touching diamonds seed " + std::to_string(seed);
+    if(seed < 5) run_polygon(checker, rings, name, true);
+    else run_polygon(checker, rings, name, false, {0.3, 0.6});
+    ++count;
+    if(pma_test::failures() > 20) return;
+  }
+  std::cout << "touching: " << count << " shapes\n";
+}
+
 template <class Traits>
 void regression_tests(Checker<Traits>& checker, const Options&)
 {
@@ -460,6 +533,7 @@ int run_all(const Options& o)
   if(wanted("holes")) hole_tests(checker, o);
   if(wanted("data")) data_tests(checker, o);
   if(wanted("degenerate")) degenerate_tests(checker, o);
+  if(wanted("touching")) touching_tests(checker, o);
   std::cout << checker.comparisons << " comparisons with the oracle, " << pma_test::failures() << " failures, "
             << std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() << " s\n";
   return pma_test::failures() == 0 ? 0 : 1;
