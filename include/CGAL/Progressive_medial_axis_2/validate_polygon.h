@@ -49,7 +49,10 @@ namespace internal {
    2. every coordinate is finite;
    3. every ring has at least 3 distinct vertices;
    4. no zero-length edge (two consecutive vertices of a ring are equal);
-   5. no repeated vertex (two equal vertices anywhere in the polygon);
+   5. no repeated vertex (two equal vertices anywhere in the polygon) without
+      `allow_touching`; with it (the default of `validate_polygon_rings()`), where
+      vertices coincide the sectors between their edges alternate between interior and
+      exterior (`check_touching_point()`), after step 6;
    6. no spike (a vertex whose two edges are collinear and fold back, angle 0);
    7. no intersection between two edges other than the common vertex of two
       consecutive edges of a ring (a Shamos-Hoey sweep, see below);
@@ -58,7 +61,11 @@ namespace internal {
   Steps 3 and 5 sort all the vertices lexicographically (`Compare_xy_2`, ties broken by
   input order); the sorted order is also the event order of the sweep.
 
-  After step 5 all vertices are pairwise distinct, so two edges share an endpoint if and
+  Where rings touch, the sweep takes the vertices of one place together (first removing
+  the edges ending there, then inserting those starting there), orders edges starting at
+  one place as if they started at one vertex, and two edges that share an endpoint place
+  meet only there unless they overlap.  Without touching vertices:
+  after step 5 all vertices are pairwise distinct, so two edges share an endpoint if and
   only if they are consecutive edges of one ring; after step 6 such edges meet only at
   that endpoint. Any other contact between two edges (a proper crossing, a vertex lying
   on another edge, a collinear overlap) is an error.
@@ -705,9 +712,9 @@ found (edge `i` of a ring goes from vertex `i` to vertex `(i+1) mod` ring size),
 - a ring with fewer than 3 (distinct) vertices;
 - a non-finite coordinate;
 - a zero-length edge (two consecutive equal vertices);
-- a repeated vertex (two equal points anywhere in the polygon, in the same ring or not),
-  unless the polygon has a more serious problem (below), which is then named: rings that
-  touch at a vertex without crossing there are valid for OGC but not supported yet;
+- rings that cross at a shared vertex: rings may touch themselves and each other at
+  vertices (holes touching the outer ring or each other, pinches, inverted islands), but
+  there the edges, in angular order, must bound interior and exterior sectors alternately;
 - a spike (two consecutive edges collinear and folding back, angle 0);
 - any intersection or contact between two edges that are not consecutive in the same
   ring (a proper crossing, a vertex lying on another edge, a collinear overlap), whether
