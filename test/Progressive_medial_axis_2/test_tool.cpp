@@ -492,7 +492,7 @@ int main(int argc, char** argv)
   // synthetic shapes and real outlines with such vertices (OpenStreetMap, ODbL)
   for(const char* f : {"syn_hole_corner", "syn_hole_corner_ccw", "syn_hole_edge_vertex", "syn_two_holes",
                        "syn_three_holes", "syn_pinch", "syn_island", "syn_island_min", "syn_reflex_touch",
-                       "syn_hole_at_reflex", "syn_pinch_small", "c1m_AUS_33982", "c1m_NGA_47424", "c1m_USA_24161", "c1m_NOR_55654"})
+                       "syn_hole_at_reflex", "syn_pinch_small", "syn_touch_at_smallest", "c1m_AUS_33982", "c1m_NGA_47424", "c1m_USA_24161", "c1m_NOR_55654"})
     pairs_against_oracle(data + "/touching/" + f + ".wkt", {-1, 1, 2, 3, 5, 50, 400});
   pairs_against_oracle(data + "/touching/c1m_PNG_21.wkt", {-1, 3000});
   outputs(data);

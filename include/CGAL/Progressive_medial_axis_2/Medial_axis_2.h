@@ -489,9 +489,14 @@ public:
     }
     // The outer boundary holds the smallest point (x, then y): every hole
     // lies strictly inside it.  This is exact and needs no area.
+    // (Where a hole touches it there, the counter-clockwise cycle is the outer one.)
     std::size_t outer = 0;
-    for(std::size_t i = 1; i < cycles.size(); ++i)
-      if(lexicographically_smaller(min_point(cycles[i]), min_point(cycles[outer]))) outer = i;
+    for(std::size_t i = 1; i < cycles.size(); ++i) {
+      const int a = min_point(cycles[i]), b = min_point(cycles[outer]);
+      if(lexicographically_smaller(a, b) ||
+         (!lexicographically_smaller(b, a) && !counterclockwise(cycles[outer]) && counterclockwise(cycles[i])))
+        outer = i;
+    }
     if(!cycles.empty()) std::swap(cycles[0], cycles[outer]);
     splice_lobes(cycles);
     std::sort(cycles.begin() + (cycles.empty() ? 0 : 1), cycles.end(),

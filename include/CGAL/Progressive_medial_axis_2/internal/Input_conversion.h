@@ -19,6 +19,7 @@
 #include <CGAL/Progressive_medial_axis_2/internal/Medial_axis_engine.h>
 
 #include <CGAL/Cartesian_converter.h>
+#include <CGAL/Exact_rational.h>
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Kernel_traits.h>
@@ -204,7 +205,8 @@ void link_touching_corners(Data& data, const Orientation& orientation)
 /// Fills the points of `data`: ring by ring, with each point's ring,
 /// index and successor along the ring with the interior on its left (the
 /// outer ring counter-clockwise, holes clockwise; the orientation of a
-/// ring is read at its lexicographically smallest vertex, a convex one).
+/// ring is read at its lexicographically smallest vertex, a convex one, or
+/// from the sign of its area where the ring touches itself there).
 template <class Data, class Point_2, class Orientation>
 void set_points(Data& data, const std::vector<std::vector<Point_2> >& rings, const Orientation& orientation)
 {
@@ -221,7 +223,19 @@ void set_points(Data& data, const std::vector<std::vector<Point_2> >& rings, con
     int lo = 0;
     for(int i = 1; i < m; ++i)
       if(ring[i].x() < ring[lo].x() || (ring[i].x() == ring[lo].x() && ring[i].y() < ring[lo].y())) lo = i;
-    const bool ccw = orientation(ring[(lo + m - 1) % m], ring[lo], ring[(lo + 1) % m]) == LEFT_TURN;
+    bool ccw = orientation(ring[(lo + m - 1) % m], ring[lo], ring[(lo + 1) % m]) == LEFT_TURN;
+    bool self_touch = false;   // at its smallest point: the turn there does not tell
+    for(int i = 0; i < m && !self_touch; ++i) self_touch = i != lo && ring[i] == ring[lo];
+    if(self_touch) {   // the sign of the area, exact for points of doubles
+      Exact_rational twice_area = 0;
+      for(int i = 0; i < m; ++i) {
+        const auto& a = ring[i];
+        const auto& b = ring[(i + 1) % m];
+        twice_area += Exact_rational(CGAL::to_double(a.x())) * Exact_rational(CGAL::to_double(b.y())) -
+                      Exact_rational(CGAL::to_double(a.y())) * Exact_rational(CGAL::to_double(b.x()));
+      }
+      ccw = CGAL::sign(twice_area) == POSITIVE;
+    }
     const bool reversed = (r == 0) ? !ccw : ccw;   // holes run clockwise inside
     for(int i = 0; i < m; ++i) {
       data.points.push_back(ring[i]);
