@@ -841,7 +841,8 @@ private:
         if(!disk_nt<Interval>(s, rel, circle))
           return false;
         branches_decided = true;
-        if(circle.x.is_point() && circle.y.is_point() && circle.r.is_point()) {
+        if(circle.x.is_point() && circle.y.is_point() && circle.r.is_point() && std::isfinite(circle.x.inf()) &&
+           std::isfinite(circle.y.inf()) && std::isfinite(circle.r.inf())) {
           centre = Point_2(circle.x.inf(), circle.y.inf());
           radius = circle.r.inf();
           return true;
@@ -853,9 +854,13 @@ private:
       // The intervals took every branch: the same computation in
       // double-double arithmetic (about 106 bits), rounded to double, gives
       // the exact disk correctly rounded in all but ill-conditioned cases.
+      // Coordinates far from 1 (near 1e150 and beyond) overflow its
+      // products: such a disk goes on to the MPFR stage.
       ++filter_statistics().double_double_evaluations;
       Progressive_medial_axes::internal::Circle_nt<Progressive_medial_axes::internal::Double_double> circle;
-      if(disk_nt<Progressive_medial_axes::internal::Double_double>(s, rel, circle)) {
+      if(disk_nt<Progressive_medial_axes::internal::Double_double>(s, rel, circle) &&
+         std::isfinite(circle.x.to_double()) && std::isfinite(circle.y.to_double()) &&
+         std::isfinite(circle.r.to_double())) {
         centre = Point_2(circle.x.to_double(), circle.y.to_double());
         radius = circle.r.to_double();
         return true;

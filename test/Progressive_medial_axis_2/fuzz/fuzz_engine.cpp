@@ -81,6 +81,11 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
            std::abs(std::get<2>(a[i]) - std::get<2>(b[i])) <= 1e-9 * scale;
   if(!same) {
     std::fprintf(stderr, "one-shot and region growing differ: %zu and %zu curves\n", a.size(), b.size());
+    for(std::size_t i = 0; i < std::max(a.size(), b.size()); ++i) {
+      if(i < a.size()) std::fprintf(stderr, "  one-shot %s %s %.17g", std::get<0>(a[i]).c_str(), std::get<1>(a[i]).c_str(), std::get<2>(a[i]));
+      if(i < b.size()) std::fprintf(stderr, "  growing %s %s %.17g", std::get<0>(b[i]).c_str(), std::get<1>(b[i]).c_str(), std::get<2>(b[i]));
+      std::fprintf(stderr, "\n");
+    }
     __builtin_trap();
   }
   return 0;
