@@ -1,13 +1,13 @@
 # The medial axis against the Segment_Delaunay_graph_2 oracle.
 pma_add_test_program(test_medial_axis_oracle)
-add_test(NAME oracle_filtered COMMAND test_medial_axis_oracle --only regressions,random,holes,data,touching)
+add_test(NAME oracle_filtered COMMAND test_medial_axis_oracle --only regressions,random,holes,data,touching,union)
 # Degenerate input (integer grids, Hilbert, Koch, regular polygons, glyphs):
 # every exact tie decided, against the oracle.
 add_test(NAME oracle_degenerate COMMAND test_medial_axis_oracle --only degenerate)
 # The double-precision model: its promise (the exact topology, merges with
 # uncertain decisions redone exactly) on the data and degenerate shapes too.
 add_test(NAME oracle_epick COMMAND test_medial_axis_oracle --traits epick --quick)
-add_test(NAME oracle_exact COMMAND test_medial_axis_oracle --traits exact --quick --only random)
+add_test(NAME oracle_exact COMMAND test_medial_axis_oracle --traits exact --quick --only random,union)
 set_tests_properties(oracle_filtered oracle_degenerate oracle_epick oracle_exact PROPERTIES TIMEOUT 1800)
 
 # The command-line tool's contract, against the oracle program sdg_pairs

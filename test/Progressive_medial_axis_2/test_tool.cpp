@@ -107,20 +107,23 @@ void usage_errors(const std::string& data)
   CHECK(h.status == 0 && h.out.find("--pairs") != std::string::npos, "--help");
 }
 
-// --pairs at --step K against the oracle on the shape of step K.
-void pairs_against_oracle(const std::string& file, const std::vector<long>& steps)
+// --pairs at --step K against the oracle on the shape of step K (with
+// `extra` options, such as --union, on the shape that --shape-out writes).
+void pairs_against_oracle(const std::string& file, const std::vector<long>& steps, const std::string& extra = "")
 {
   for(long k : steps) {
     std::string shape = tmp + "/shape.wkt";
-    std::string args = tool + " --pairs " + (k >= 0 ? "--step " + std::to_string(k) + " --shape-out " + shape + " " : "") + file;
+    const bool written = k >= 0 || !extra.empty();
+    std::string args = tool + " --pairs " + extra + " " + (k >= 0 ? "--step " + std::to_string(k) + " " : "") +
+                       (written ? "--shape-out " + shape + " " : "") + file;
     Result ours = run(args);
     CHECK(ours.status == 0, args << ": exit status " << ours.status << ": " << ours.err);
-    Result theirs = run(sdg_pairs + " " + (k >= 0 ? shape : file));
+    Result theirs = run(sdg_pairs + " " + (written ? shape : file));
     CHECK(theirs.status == 0, "sdg_pairs: " << theirs.err);
     std::istringstream a(ours.out), b(theirs.out);
     std::vector<pma_test::Oracle_curve> ca = pma_test::parse_pairs(a), cb = pma_test::parse_pairs(b);
     // bounding-box diagonal of the shape compared
-    std::string wkt = slurp(k >= 0 ? shape : file);
+    std::string wkt = slurp(written ? shape : file);
     double x0 = 1e300, y0 = 1e300, x1 = -1e300, y1 = -1e300;
     {
       std::string t;
@@ -137,6 +140,35 @@ void pairs_against_oracle(const std::string& file, const std::vector<long>& step
     pma_test::Curve_diff d = pma_test::compare_curves(ca, cb, std::hypot(x1 - x0, y1 - y0));
     CHECK(!ca.empty() && d.ok(), file << " step " << k << ": --pairs differs from sdg_pairs (tool | oracle)\n" << d.report());
   }
+}
+
+// --union: the axis of the union of two polygons that share edges, from
+// their two axes, against the oracle on the union that --shape-out writes;
+// its --stats; the errors.
+void union_of_two(const std::string& data)
+{
+  const std::string d = data + "/union/";
+  for(const char* p : {"star", "ring"}) {
+    pairs_against_oracle(d + p + "_a.wkt", {-1}, "--union " + d + p + "_b.wkt");
+    pairs_against_oracle(d + p + "_b.wkt", {-1}, "--union " + d + p + "_a.wkt");
+  }
+  Result r = run(tool + " --stats --union " + d + "ring_b.wkt " + d + "ring_a.wkt");
+  CHECK(r.status == 0 && r.out.find("\nunion_shared_edges 2\n") != std::string::npos &&
+          r.out.find("\nunion_chains 2\n") != std::string::npos && r.out.find("\ntime_union_merge ") != std::string::npos &&
+          r.out.find("\nmode oneshot\n") != std::string::npos,
+        "--union --stats: " << r.out << r.err);
+  const std::vector<std::pair<std::string, std::string> > bad = {
+    {"--union " + d + "chain2_b.wkt " + d + "chain2_a.wkt", "not supported yet: the polygons share a chain of 2 edges"},
+    {"--union " + d + "star_a.wkt " + d + "star_a.wkt", "the polygons overlap"},
+    {"--union " + data + "/syn_comb50.wkt " + d + "star_a.wkt", "the polygons share no edge"},
+    {"--union " + data + "/syn_comb50.wkt " + data + "/invalid/crossing.wkt", "crossing.wkt: self-intersection"}};
+  for(const auto& b : bad) {
+    Result e = run(tool + " " + b.first);
+    CHECK(e.status == 2 && e.err.find(b.second) != std::string::npos && count_lines(e.err) == 1,
+          b.first << ": exit status " << e.status << ", message '" << e.err << "'");
+  }
+  Result u = run(tool + " --union " + d + "star_b.wkt --step 3 " + d + "star_a.wkt");
+  CHECK(u.status == 2, "--union with --step: exit status " << u.status);
 }
 
 void outputs(const std::string& data)
@@ -498,6 +530,7 @@ int main(int argc, char** argv)
   outputs(data);
   analysis_outputs(data);
   several_polygons(data);
+  union_of_two(data);
   repair(data);
 
   std::system((std::string("rm -rf ") + tmp).c_str());

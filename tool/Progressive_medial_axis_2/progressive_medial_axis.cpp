@@ -5,7 +5,8 @@
 // Reads polygons (WKT POLYGON, MULTIPOLYGON, GEOMETRYCOLLECTION; GeoJSON
 // geometries, Feature, FeatureCollection), computes the medial axis of each
 // (in one shot, or progressively by region growing with --step or --frames,
-// for one polygon), and prints or writes them.  Run with
+// for one polygon), or of the union of two polygons from their two axes
+// (--union), and prints or writes them.  Run with
 // --help for the options.  Exit status: 0 on success, 2 on invalid input or
 // usage, 1 on any other failure.
 
@@ -15,6 +16,7 @@
 #include <CGAL/Progressive_medial_axis_2/Medial_axis_significance_2.h>
 #include <CGAL/Progressive_medial_axis_2/Medial_axis_centerline_2.h>
 #include <CGAL/Progressive_medial_axis_2/maximum_inscribed_circle_2.h>
+#include <CGAL/Progressive_medial_axis_2/medial_axis_union_2.h>
 #include <CGAL/Progressive_medial_axis_2/validate_polygon.h>
 
 #include <pma_tool/polygon_io.h>
@@ -62,7 +64,8 @@ const char* usage_text =
   "  --branches         print 'branch A B C ... x y r' for every branch point\n"
   "  --step K           stop after K merges; ids then refer to the shape of that\n"
   "                     step, as written by --shape-out\n"
-  "  --shape-out FILE   write the shape of the last step done as a WKT POLYGON\n"
+  "  --shape-out FILE   write the shape of the last step done (with --union, the\n"
+  "                     union) as a WKT POLYGON\n"
   "  --svg FILE         draw the shape and its medial axis as SVG\n"
   "  --geojson FILE     write the medial axis (curves and branch points) as GeoJSON\n"
   "  --wkt-out FILE     write the medial axis as a WKT MULTILINESTRING\n"
@@ -71,6 +74,10 @@ const char* usage_text =
   "  --frames-prefix P  file name prefix of the progressive pictures\n"
   "  --traits T         filtered (default: exact decisions), epick (double), exact (CORE::Expr)\n"
   "  --threads N        threads of the one-shot computation (default: all hardware threads)\n"
+  "  --union OTHER      OTHER is a second polygon whose boundary shares chains of edges\n"
+  "                     with INPUT's (same points, opposite directions): compute both\n"
+  "                     axes in one shot, merge them, and output the axis of the union;\n"
+  "                     ids then refer to the union polygon, as --shape-out writes it\n"
   "  --prune SPEC       prune every axis output by erosion thickness (extended\n"
   "                     grassfire): SPEC is et=T, ratio=Q or et=T,ratio=Q; keeps the\n"
   "                     points with ET >= T (input units) and ET >= Q * EDF\n"
@@ -95,7 +102,7 @@ const char* usage_text =
 struct Options {
   bool pairs = false, branches = false, stats = false;
   long long step = -1;
-  std::string input, shape_out, svg, geojson, wkt_out, frames_prefix, traits = "filtered";
+  std::string input, union_with, shape_out, svg, geojson, wkt_out, frames_prefix, traits = "filtered";
   int frames = 0;
   int threads = 0;   // 0: all hardware threads
   bool prune = false, extend = false, inscribed_circle = false, repair = false;
@@ -165,6 +172,7 @@ Options parse(int argc, char** argv)
       if(v.empty() || *end != '\0' || o.step < 0) usage_error("--step needs a non-negative integer, got '" + v + "'");
     }
     else if(a == "--shape-out") o.shape_out = value("--shape-out");
+    else if(a == "--union") o.union_with = value("--union");
     else if(a == "--svg") o.svg = value("--svg");
     else if(a == "--geojson") o.geojson = value("--geojson");
     else if(a == "--wkt-out") o.wkt_out = value("--wkt-out");
@@ -206,6 +214,8 @@ Options parse(int argc, char** argv)
   if(o.input.empty()) usage_error("no input file");
   if(o.frames > 0 && o.frames_prefix.empty()) usage_error("--frames needs --frames-prefix");
   if(!o.repaired_out.empty() && !o.repair) usage_error("--repaired-out needs --repair");
+  if(!o.union_with.empty() && (o.step >= 0 || o.frames > 0 || o.repair))
+    usage_error("--union cannot be combined with --step, --frames or --repair");
   if(o.repair && !pma_tool::can_repair())
     usage_error("--repair needs GEOS: this build of the tool has none (install libgeos-dev and rebuild)");
   return o;
@@ -356,6 +366,23 @@ int run(const Options& o)
     std::cerr << o.input << ": " << e.what() << "\n";
     return 2;
   }
+  // --union: the second polygon, checked as the first
+  std::vector<pma_tool::Input_polygon<CGAL::Epick::Point_2> > other;
+  if(!o.union_with.empty()) {
+    for(const auto* f : {&o.input, &o.union_with}) {
+      try {
+        if(f == &o.union_with) other = pma_tool::read_polygons_file<CGAL::Epick::Point_2>(o.union_with);
+        const auto& polygons = f == &o.input ? input : other;
+        if(polygons.size() != 1)
+          throw CGAL::Progressive_medial_axes::Input_error("--union needs one polygon in each file, found " +
+                                                           std::to_string(polygons.size()));
+        CGAL::Progressive_medial_axes::validate_polygon(polygons[0].rings);
+      } catch(const CGAL::Progressive_medial_axes::Input_error& e) {
+        std::cerr << *f << ": " << e.what() << "\n";
+        return 2;
+      }
+    }
+  }
   double read_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 
   int threads = 1;
@@ -493,7 +520,37 @@ int run(const Options& o)
     usage_error("--step, --frames and --shape-out need one polygon; " + o.input + " has " +
                 std::to_string(input.size()));
   std::unique_ptr<PMA> pma;
-  if(!progressive) {
+  CGAL::Progressive_medial_axes::Medial_axis_union_statistics union_stats;
+  if(!o.union_with.empty()) {
+    // the two axes in one shot, then their union
+    Job& job = jobs[0];
+    Medial_axis a, b;
+    CGAL::Progressive_medial_axis_statistics sb;
+    in_arena([&]() {
+      a = CGAL::medial_axis_2(input[0].rings, Traits(), CGAL::TRUST_INPUT, &job.stats);
+      b = CGAL::medial_axis_2(other[0].rings, Traits(), CGAL::TRUST_INPUT, &sb);
+    });
+    try {
+      job.one_shot = CGAL::medial_axis_union_2(a, b, Traits(), &union_stats);
+    } catch(const CGAL::Progressive_medial_axes::Input_error& e) {
+      std::cerr << o.input << " and " << o.union_with << ": " << e.what() << "\n";
+      return 2;
+    }
+    job.stats.input_vertices += sb.input_vertices;
+    job.stats.holes += sb.holes;
+    job.stats.triangles += sb.triangles;
+    job.stats.triangulation_seconds += sb.triangulation_seconds;
+    job.stats.merge_seconds += sb.merge_seconds;
+    job.stats.merges += sb.merges;
+    job.stats.switches += sb.switches + union_stats.switches;
+    job.stats.vanishings += sb.vanishings + union_stats.vanishings;
+    job.stats.anomalies += sb.anomalies;
+    job.stats.redone_merges += sb.redone_merges;
+    job.stats.max_queue = std::max(job.stats.max_queue, sb.max_queue);
+    job.stats.validation_seconds = 0;   // (counted in time_read with the reading)
+    job.ma = &job.one_shot;
+    analyse(o, job);
+  } else if(!progressive) {
     // the one-shot divide and conquer of every polygon (in parallel over the
     // polygons, largest first, and within each), then what the options ask
     typedef CGAL::Progressive_medial_axes::internal::Thread_counters<Traits> Counters;
@@ -567,9 +624,15 @@ int run(const Options& o)
   if(!o.shape_out.empty()) {
     const Medial_axis& ma = *jobs[0].ma;
     std::ofstream f = open_out(o.shape_out);
-    Names shape_names(ma, Names::SHAPE);
+    // the shape of the step, or the union polygon as its ids number it
+    std::vector<std::vector<typename Medial_axis::Input_vertex> > rings = Names(ma, Names::SHAPE).rings();
+    if(!o.union_with.empty()) {
+      rings.assign(ma.number_of_input_rings(), {});
+      for(std::size_t r = 0; r < rings.size(); ++r)
+        for(std::size_t i = 0; i < ma.input_ring_size(r); ++i) rings[r].push_back({int(r), int(i)});
+    }
     std::vector<std::vector<CGAL::Epick::Point_2> > out;
-    for(const auto& r : shape_names.rings()) {
+    for(const auto& r : rings) {
       out.emplace_back();
       for(const auto& v : r) {
         auto p = Medial_axis::to_xy(ma.point(v));
@@ -677,6 +740,9 @@ int run(const Options& o)
     std::printf("switch_events %zu\nvanishing_events %zu\nanomalies %zu\nmax_n_v %zu\n",
                 s.switches, s.vanishings, s.anomalies, s.max_queue);
     std::printf("redone_merges %zu\n", s.redone_merges);
+    if(!o.union_with.empty())
+      std::printf("time_union_merge %.6f\ntime_union_join %.6f\nunion_shared_edges %zu\nunion_chains %zu\n",
+                  union_stats.merge_seconds, union_stats.join_seconds, union_stats.shared_edges, union_stats.chains);
     std::printf("medial_curves %zu\nbranch_vertices %zu\n", curves, nb);
     print_filter_statistics(Traits(), 0);
     if(o.prune) std::printf("pruned_curves %zu\n", pruned_curves);

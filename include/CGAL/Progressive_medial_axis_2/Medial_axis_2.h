@@ -44,6 +44,12 @@ struct Medial_axis_access {
   {
     return Medial_axis_2<K>(std::move(d));
   }
+  // The data of an axis (for a driver that builds on finished axes).
+  template <class K>
+  static const auto& data(const Medial_axis_2<K>& m)
+  {
+    return m.d_;
+  }
 };
 } // namespace internal
 } // namespace Progressive_medial_axes

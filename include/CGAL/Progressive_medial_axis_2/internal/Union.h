@@ -1,0 +1,486 @@
+// Copyright (c) 2026 The Progressive_medial_axis_2 authors.
+// All rights reserved.
+//
+// This file is part of CGAL (www.cgal.org).
+//
+// $URL$
+// $Id$
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+//
+// Author(s)     : The Progressive_medial_axis_2 authors
+//
+// The union driver: the medial axis of the union of two polygons with
+// disjoint interiors, from their two medial axes (Liu et al. 2016, Fig. 24).
+// Their boundaries share chains of edges (same points, opposite directions);
+// every shared edge is a segment generator of both axes, and the union's axis
+// is what the engine's merge gives along each shared edge in turn: the same
+// merge that region growing does along a diagonal of a triangle.
+//
+// The steps:
+//   1. Corners.  A corner of a polygon is one of its vertices as a sector of
+//      its interior (where rings touch, one place holds several corners; the
+//      engine's point indices are corners).  A corner whose outgoing edge is
+//      shared continues, across that edge, into the corner of the other
+//      polygon at the same place whose incoming edge is the same edge.  The
+//      corners so chained form a corner of the union; a closed chain of
+//      corners is a point inside the union (a vertex inside a shared chain).
+//      This is topology only: no angle is computed.
+//   2. The union's boundary cycles are traced from corner to corner along the
+//      edges that are not shared.  The counter-clockwise cycle that holds the
+//      smallest point is the outer ring (other counter-clockwise cycles, the
+//      lobes of a pinched union, are spliced into it where they touch it),
+//      the clockwise ones are holes.  The union is validated as any input.
+//   3. The two structures are copied into one (the inputs are left as they
+//      are: this is linear in their size, and the only part of the cost that
+//      is not local) and their point indices renumbered to the union's.
+//   4. The merges, one per chain: the first joins the two components, each
+//      further one closes a ring around a hole of the union.  Each merge
+//      costs in proportion to the cells it touches.
+//
+// Not supported yet: chains of several edges.  The vertices inside such a
+// chain become points inside the union; merging along the chain's edges one
+// by one, the merge along the second edge starts at a corner of 360 degrees
+// (the tip of a slit) whose point cell must vanish, which the engine's merge
+// along one segment does not do.  The paper merges along the whole chain;
+// the merge needs that extension.  Such unions are refused with an error.
+//
+// The union's points are its rings' (the numbering that the ids refer to),
+// followed by the places inside shared chains, which are no vertices of the
+// union (no cell of the result refers to them; this is checked).
+
+#ifndef CGAL_PROGRESSIVE_MEDIAL_AXIS_2_INTERNAL_UNION_H
+#define CGAL_PROGRESSIVE_MEDIAL_AXIS_2_INTERNAL_UNION_H
+
+#include <CGAL/Progressive_medial_axis_2/Input_error.h>
+#include <CGAL/Progressive_medial_axis_2/Medial_axis_2.h>
+#include <CGAL/Progressive_medial_axis_2/validate_polygon.h>
+#include <CGAL/Progressive_medial_axis_2/internal/Input_conversion.h>
+#include <CGAL/Progressive_medial_axis_2/internal/Medial_axis_engine.h>
+#include <CGAL/Exact_rational.h>
+
+#include <algorithm>
+#include <array>
+#include <chrono>
+#include <cstddef>
+#include <functional>
+#include <memory>
+#include <string>
+#include <unordered_map>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Progressive_medial_axes {
+
+/*!
+\ingroup PkgProgressiveMedialAxis2Ref
+What `CGAL::medial_axis_union_2()` did.
+*/
+struct Medial_axis_union_statistics {
+  std::size_t shared_edges = 0;   ///< edges the two polygons share (each merged once)
+  std::size_t chains = 0;         ///< maximal chains of shared edges
+  std::size_t switches = 0;       ///< switch points of the merges
+  std::size_t vanishings = 0;     ///< vanishing points of the merges
+  double join_seconds = 0;        ///< finding the shared chains, the union's rings and its validation, copying the two structures
+  double merge_seconds = 0;       ///< the merges alone
+};
+
+namespace internal {
+
+// Hash of an edge given by the coordinates of its ends (as doubles; equal
+// points have equal doubles, and candidates are compared exactly).
+struct Edge_key_hash {
+  std::size_t operator()(const std::array<double, 4>& k) const
+  {
+    std::size_t h = 0;
+    for(double d : k) h = h * 1000003u ^ std::hash<double>()(d);
+    return h;
+  }
+};
+
+template <class Traits>
+class Medial_axis_union
+{
+public:
+  typedef typename Traits::Kernel Kernel;
+  typedef typename Kernel::Point_2 Point_2;
+  typedef Medial_axis_engine<Traits> Engine;
+  typedef typename Engine::Data Data;
+  typedef typename Data::Hds Hds;
+
+  Medial_axis_union(const Data& a, const Data& b, const Traits& traits) : traits_(traits)
+  {
+    in_[0] = &a;
+    in_[1] = &b;
+  }
+
+  std::shared_ptr<Data> run(Medial_axis_union_statistics& stats)
+  {
+    auto t0 = std::chrono::steady_clock::now();
+    for(int x = 0; x < 2; ++x) check_complete(x);
+    find_shared_edges();
+    group_corners();
+    std::vector<std::vector<std::pair<int, int> > > rings = union_rings();
+    auto data = std::make_shared<Data>();
+    build_points(*data, rings);
+    join(*data);
+    stats.join_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+
+    t0 = std::chrono::steady_clock::now();
+    Engine engine(*data, traits_);
+    Null_merge_visitor visitor;
+    for(const std::vector<int>& chain : chains_) {
+      for(int k : chain) {
+        const Merge_statistics s = engine.merge(boundary_[0][std::size_t(k)], boundary_[1][std::size_t(shared_[0][std::size_t(k)])] + offset_, visitor);
+        stats.switches += s.switches;
+        stats.vanishings += s.vanishings;
+      }
+    }
+    engine.resolve_pending();
+    stats.merge_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    stats.chains = chains_.size();
+    stats.shared_edges = 0;
+    for(const auto& c : chains_) stats.shared_edges += c.size();
+    check_result(*data);
+    return data;
+  }
+
+private:
+  const Point_2& place(int x, int k) const { return in_[x]->points[std::size_t(k)]; }
+  int next(int x, int k) const { return in_[x]->info[std::size_t(k)].next; }
+  int corners(int x) const { return in_[x]->ring_start.back(); }
+  static const char* name(int x) { return x == 0 ? "the first polygon" : "the second polygon"; }
+  std::string where(int x, int k) const
+  {
+    const Point_info& i = in_[x]->info[std::size_t(k)];
+    return std::string(name(x)) + " ring " + std::to_string(i.ring) + " vertex " + std::to_string(i.index);
+  }
+  std::array<double, 4> key(const Point_2& p, const Point_2& q) const
+  {
+    return {{CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(q.x()), CGAL::to_double(q.y())}};
+  }
+
+  // The axis of a whole polygon (not of a step of a progressive run): every
+  // polygon edge is a cell with its boundary half-edge on the border.  Notes
+  // the boundary half-edge of every edge (by the corner it starts at).
+  void check_complete(int x)
+  {
+    const Hds& hds = in_[x]->hds;
+    boundary_[x].assign(std::size_t(corners(x)), NO_INDEX);
+    int found = 0;
+    for(int h = 0; h < int(hds.halfedge_capacity()); ++h) {
+      if(hds.is_deleted(h) || hds.face_of(h ^ 1) != OUTSIDE || hds.face_of(h) < 0) continue;
+      const Hds_face& f = hds.face(hds.face_of(h));
+      if(f.is_point || f.p0 < 0 || f.p0 >= corners(x) || next(x, f.p0) != f.p1 || boundary_[x][std::size_t(f.p0)] != NO_INDEX)
+        throw Input_error(std::string("the medial axis of ") + name(x) + " is not the axis of a whole polygon (a step of a progressive computation?)");
+      boundary_[x][std::size_t(f.p0)] = h;
+      ++found;
+    }
+    if(found != corners(x))
+      throw Input_error(std::string("the medial axis of ") + name(x) + " is not the axis of a whole polygon (a step of a progressive computation?)");
+  }
+
+  // shared_[x][k]: the edge of the other polygon that is the edge from
+  // corner k of polygon x, reversed (by the corner it starts at), or NO_INDEX.
+  void find_shared_edges()
+  {
+    std::unordered_multimap<std::array<double, 4>, int, Edge_key_hash> edges_b;
+    edges_b.reserve(std::size_t(corners(1)));
+    for(int m = 0; m < corners(1); ++m) edges_b.emplace(key(place(1, m), place(1, next(1, m))), m);
+    shared_[0].assign(std::size_t(corners(0)), NO_INDEX);
+    shared_[1].assign(std::size_t(corners(1)), NO_INDEX);
+    auto find_b = [&](const Point_2& p, const Point_2& q) {
+      auto range = edges_b.equal_range(key(p, q));
+      for(auto it = range.first; it != range.second; ++it)
+        if(place(1, it->second) == p && place(1, next(1, it->second)) == q) return it->second;
+      return int(NO_INDEX);
+    };
+    bool any = false;
+    for(int k = 0; k < corners(0); ++k) {
+      const Point_2 &p = place(0, k), &q = place(0, next(0, k));
+      const int same = find_b(p, q);
+      if(same != NO_INDEX)
+        throw Input_error("the polygons overlap: the edge from " + where(0, k) + " is also an edge of " + where(1, same) +
+                          ", in the same direction");
+      const int m = find_b(q, p);
+      if(m != NO_INDEX) {
+        shared_[0][std::size_t(k)] = m;
+        shared_[1][std::size_t(m)] = k;
+        any = true;
+      }
+    }
+    if(!any)
+      throw Input_error("the polygons share no edge: a union is merged along common chains of edges (the same points, in opposite directions)");
+    // the chains, in the order of the first polygon's edges
+    for(int k = 0; k < corners(0); ++k) {
+      if(shared_[0][std::size_t(k)] == NO_INDEX || shared_[0][std::size_t(prev(0, k))] != NO_INDEX) continue;
+      chains_.emplace_back();
+      for(int e = k; shared_[0][std::size_t(e)] != NO_INDEX; e = next(0, e)) chains_.back().push_back(e);
+    }
+    std::vector<char> in_chain(std::size_t(corners(0)), 0);
+    for(const auto& c : chains_)
+      for(int e : c) in_chain[std::size_t(e)] = 1;
+    for(int k = 0; k < corners(0); ++k) {   // whole rings shared (a hole filled exactly)
+      if(shared_[0][std::size_t(k)] == NO_INDEX || in_chain[std::size_t(k)]) continue;
+      chains_.emplace_back();
+      for(int e = k; !in_chain[std::size_t(e)]; e = next(0, e)) {
+        in_chain[std::size_t(e)] = 1;
+        chains_.back().push_back(e);
+      }
+    }
+    // A vertex inside a chain becomes a point inside the union: the merge
+    // along the chain's second edge starts at a corner of 360 degrees (the
+    // tip of a slit) whose point cell must vanish, and the engine's merge
+    // along one segment does not do that (region growing and the divide and
+    // conquer never make a polygon vertex interior).  The paper merges along
+    // the whole chain at once; until the merge does, such unions are refused.
+    for(const auto& c : chains_)
+      if(c.size() > 1)
+        throw Input_error("not supported yet: the polygons share a chain of " + std::to_string(c.size()) +
+                          " edges (from " + where(0, c.front()) +
+                          "); unions along chains of one edge each are merged (a chain with a vertex inside it is not)");
+  }
+
+  int prev(int x, int k) const
+  {
+    if(prev_[x].empty()) {
+      prev_[x].assign(std::size_t(corners(x)), NO_INDEX);
+      for(int i = 0; i < corners(x); ++i) prev_[x][std::size_t(next(x, i))] = i;
+    }
+    return prev_[x][std::size_t(k)];
+  }
+
+  // The corner of the other polygon that corner k of x continues into,
+  // across its outgoing edge (which is shared).
+  std::pair<int, int> across(int x, int k) const
+  {
+    return std::make_pair(1 - x, next(1 - x, shared_[x][std::size_t(k)]));
+  }
+
+  // group_[x][k]: the corner of the union that corner k of polygon x is part of.
+  void group_corners()
+  {
+    for(int x = 0; x < 2; ++x) group_[x].assign(std::size_t(corners(x)), NO_INDEX);
+    for(int x = 0; x < 2; ++x)
+      for(int k = 0; k < corners(x); ++k) {
+        if(shared_[x][std::size_t(prev(x, k))] != NO_INDEX) continue;   // incoming edge shared: not a first corner
+        const int g = int(groups_.size());
+        groups_.push_back(Group{x, k, x, k, false});
+        std::pair<int, int> c(x, k);
+        group_[x][std::size_t(k)] = g;
+        while(shared_[c.first][std::size_t(c.second)] != NO_INDEX) {
+          c = across(c.first, c.second);
+          group_[c.first][std::size_t(c.second)] = g;
+        }
+        groups_[std::size_t(g)].last_x = c.first;
+        groups_[std::size_t(g)].last = c.second;
+      }
+    for(int x = 0; x < 2; ++x)   // closed chains of corners: points inside the union
+      for(int k = 0; k < corners(x); ++k) {
+        if(group_[x][std::size_t(k)] != NO_INDEX) continue;
+        const int g = int(groups_.size());
+        groups_.push_back(Group{x, k, x, k, true});
+        std::pair<int, int> c(x, k);
+        do {
+          group_[c.first][std::size_t(c.second)] = g;
+          c = across(c.first, c.second);
+        } while(group_[c.first][std::size_t(c.second)] == NO_INDEX);
+      }
+  }
+
+  // The group that follows group g along the union's boundary.
+  int next_group(int g) const
+  {
+    const Group& G = groups_[std::size_t(g)];
+    return group_[G.last_x][std::size_t(next(G.last_x, G.last))];
+  }
+
+  bool counterclockwise(const std::vector<int>& cycle) const
+  {
+    CGAL::Exact_rational twice_area = 0;
+    for(std::size_t i = 0; i < cycle.size(); ++i) {
+      const Point_2 &p = group_place(cycle[i]), &q = group_place(cycle[(i + 1) % cycle.size()]);
+      twice_area += CGAL::Exact_rational(CGAL::to_double(p.x())) * CGAL::Exact_rational(CGAL::to_double(q.y())) -
+                    CGAL::Exact_rational(CGAL::to_double(p.y())) * CGAL::Exact_rational(CGAL::to_double(q.x()));
+    }
+    return CGAL::sign(twice_area) == POSITIVE;
+  }
+  const Point_2& group_place(int g) const { return place(groups_[std::size_t(g)].first_x, groups_[std::size_t(g)].first); }
+  bool smaller(const Point_2& p, const Point_2& q) const { return p.x() < q.x() || (p.x() == q.x() && p.y() < q.y()); }
+
+  // The union's rings (outer ring first), as (polygon, corner) of the first
+  // corner of each of their groups.
+  std::vector<std::vector<std::pair<int, int> > > union_rings()
+  {
+    std::vector<std::vector<int> > cycles;
+    std::vector<char> seen(groups_.size(), 0);
+    for(int g = 0; g < int(groups_.size()); ++g) {
+      if(seen[std::size_t(g)] || groups_[std::size_t(g)].closed) continue;
+      cycles.emplace_back();
+      for(int h = g; !seen[std::size_t(h)]; h = next_group(h)) {
+        seen[std::size_t(h)] = 1;
+        cycles.back().push_back(h);
+      }
+    }
+    std::vector<char> ccw(cycles.size());
+    for(std::size_t i = 0; i < cycles.size(); ++i) ccw[i] = counterclockwise(cycles[i]);
+    // the outer ring: the counter-clockwise cycle with the smallest point
+    std::size_t outer = cycles.size();
+    for(std::size_t i = 0; i < cycles.size(); ++i) {
+      if(!ccw[i]) continue;
+      if(outer == cycles.size() || smaller(min_place(cycles[i]), min_place(cycles[outer]))) outer = i;
+    }
+    if(outer == cycles.size())
+      throw Input_error("the union is not a valid polygon: it has no outer ring");
+    std::swap(cycles[0], cycles[outer]);
+    std::swap(ccw[0], ccw[outer]);
+    // lobes (the union is pinched): spliced into the outer ring where they touch it
+    for(bool spliced = true; spliced;) {
+      spliced = false;
+      for(std::size_t i = 1; i < cycles.size() && !spliced; ++i) {
+        if(!ccw[i]) continue;
+        std::vector<int>& o = cycles[0];
+        for(std::size_t a = 0; a < o.size() && !spliced; ++a)
+          for(std::size_t b = 0; b < cycles[i].size() && !spliced; ++b) {
+            if(group_place(o[a]) != group_place(cycles[i][b])) continue;
+            std::vector<int> joined(o.begin(), o.begin() + std::ptrdiff_t(a));
+            for(std::size_t k = 0; k < cycles[i].size(); ++k) joined.push_back(cycles[i][(b + k) % cycles[i].size()]);
+            joined.insert(joined.end(), o.begin() + std::ptrdiff_t(a), o.end());
+            o.swap(joined);
+            cycles.erase(cycles.begin() + std::ptrdiff_t(i));
+            ccw.erase(ccw.begin() + std::ptrdiff_t(i));
+            spliced = true;
+          }
+      }
+    }
+    for(std::size_t i = 1; i < cycles.size(); ++i)
+      if(ccw[i])
+        throw Input_error("the union is not a valid polygon: its interior is not connected (at " +
+                          where(groups_[std::size_t(cycles[i][0])].first_x, groups_[std::size_t(cycles[i][0])].first) + ")");
+    // each ring from its first corner in input order (the first polygon's,
+    // then the second's), the holes in the order of those corners
+    auto rank = [&](int g) { return std::make_pair(groups_[std::size_t(g)].first_x, groups_[std::size_t(g)].first); };
+    for(std::vector<int>& c : cycles)
+      std::rotate(c.begin(), std::min_element(c.begin(), c.end(), [&](int u, int v) { return rank(u) < rank(v); }), c.end());
+    std::sort(cycles.begin() + 1, cycles.end(), [&](const std::vector<int>& u, const std::vector<int>& v) { return rank(u[0]) < rank(v[0]); });
+    std::vector<std::vector<std::pair<int, int> > > rings;
+    for(const std::vector<int>& c : cycles) {
+      rings.emplace_back();
+      for(int g : c) rings.back().push_back(rank(g));
+    }
+    return rings;
+  }
+  const Point_2& min_place(const std::vector<int>& cycle) const
+  {
+    const Point_2* m = &group_place(cycle[0]);
+    for(int g : cycle)
+      if(smaller(group_place(g), *m)) m = &group_place(g);
+    return *m;
+  }
+
+  // The union's points: its rings, validated, then the places inside the
+  // shared chains; and the union corner of every corner of the two polygons.
+  void build_points(Data& data, const std::vector<std::vector<std::pair<int, int> > >& rings)
+  {
+    std::vector<std::vector<Point_2> > points;
+    for(const auto& r : rings) {
+      points.emplace_back();
+      for(const auto& c : r) points.back().push_back(place(c.first, c.second));
+    }
+    try {
+      validate_polygon(points);
+    } catch(const Input_error& e) {
+      throw Input_error(std::string("the union is not a valid polygon: ") + e.what());
+    }
+    set_points(data, points, traits_.orientation_2_object());
+    // a group's union corner: the union point whose outgoing edge is the
+    // group's (an edge leaves one corner only)
+    std::unordered_map<std::array<double, 4>, int, Edge_key_hash> by_edge;
+    by_edge.reserve(data.points.size());
+    for(int u = 0; u < int(data.points.size()); ++u)
+      by_edge.emplace(key(data.points[std::size_t(u)], data.points[std::size_t(data.info[std::size_t(u)].next)]), u);
+    std::vector<int> corner_of(groups_.size(), NO_INDEX);
+    for(std::size_t g = 0; g < groups_.size(); ++g) {
+      const Group& G = groups_[g];
+      if(G.closed) {
+        corner_of[g] = int(data.points.size());
+        data.points.push_back(place(G.first_x, G.first));
+        data.info.emplace_back();   // ring -1: not a vertex of the union
+        continue;
+      }
+      auto it = by_edge.find(key(place(G.last_x, G.last), place(G.last_x, next(G.last_x, G.last))));
+      CGAL_assertion(it != by_edge.end());
+      corner_of[g] = it->second;
+    }
+    for(int x = 0; x < 2; ++x) {
+      map_[x].assign(in_[x]->points.size(), NO_INDEX);
+      for(int k = 0; k < corners(x); ++k) map_[x][std::size_t(k)] = corner_of[std::size_t(group_[x][std::size_t(k)])];
+    }
+  }
+
+  // The two structures in one, renumbered.
+  void join(Data& data)
+  {
+    data.hds = in_[0]->hds;
+    Hds b = in_[1]->hds;
+    const std::size_t faces_a = data.hds.face_capacity(), vertices_a = data.hds.vertex_capacity();
+    const typename Hds::Offsets o = data.hds.append(b);
+    offset_ = o.halfedge;
+    auto renumber = [&](int x, int& i) {
+      if(i >= 0) i = std::size_t(i) < map_[x].size() ? map_[x][std::size_t(i)] : NO_INDEX;
+    };
+    for(std::size_t f = 0; f < data.hds.face_capacity(); ++f) {
+      Hds_face& F = data.hds.face(int(f));
+      const int x = f < faces_a ? 0 : 1;
+      renumber(x, F.p0);
+      renumber(x, F.p1);
+    }
+    for(std::size_t v = 0; v < data.hds.vertex_capacity(); ++v) {
+      auto& V = data.hds.vertex(int(v));
+      const int x = v < vertices_a ? 0 : 1;
+      renumber(x, V.input_point);
+      for(auto& t : V.triple) {
+        renumber(x, t[0]);
+        renumber(x, t[1]);
+      }
+    }
+  }
+
+  // No cell and no vertex of the result refers to a place inside a shared
+  // chain, and no shared edge is left on the border.
+  void check_result(const Data& data) const
+  {
+    const int n = data.ring_start.back();
+    for(std::size_t f = 0; f < data.hds.face_capacity(); ++f) {
+      const Hds_face& F = data.hds.face(int(f));
+      CGAL_assertion_msg(!F.alive || (F.p0 < n && F.p1 < n), "a cell of a point inside a shared chain is left");
+      CGAL_USE(F);
+    }
+    for(std::size_t v = 0; v < data.hds.vertex_capacity(); ++v) {
+      const auto& V = data.hds.vertex(int(v));
+      CGAL_assertion_msg(!V.alive || V.halfedge == NO_INDEX || V.input_point < n, "a corner inside a shared chain is left");
+      CGAL_USE(V);
+    }
+    CGAL_USE(n);
+  }
+
+  struct Group {
+    int first_x, first;   // its first corner (incoming edge not shared)
+    int last_x, last;     // its last corner (outgoing edge not shared)
+    bool closed;          // a point inside the union
+  };
+
+  const Traits& traits_;
+  const Data* in_[2];
+  std::vector<int> boundary_[2], shared_[2], group_[2], map_[2];
+  mutable std::vector<int> prev_[2];
+  std::vector<Group> groups_;
+  std::vector<std::vector<int> > chains_;
+  int offset_ = 0;
+};
+
+} // namespace internal
+} // namespace Progressive_medial_axes
+} // namespace CGAL
+
+#endif // CGAL_PROGRESSIVE_MEDIAL_AXIS_2_INTERNAL_UNION_H

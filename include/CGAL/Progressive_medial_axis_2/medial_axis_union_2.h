@@ -1,0 +1,80 @@
+// Copyright (c) 2026 The Progressive_medial_axis_2 authors.
+// All rights reserved.
+//
+// This file is part of CGAL (www.cgal.org).
+//
+// $URL$
+// $Id$
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+//
+// Author(s)     : The Progressive_medial_axis_2 authors
+
+#ifndef CGAL_PROGRESSIVE_MEDIAL_AXIS_2_MEDIAL_AXIS_UNION_2_H
+#define CGAL_PROGRESSIVE_MEDIAL_AXIS_2_MEDIAL_AXIS_UNION_2_H
+
+#include <CGAL/license/Progressive_medial_axis_2.h>
+
+#include <CGAL/Progressive_medial_axis_traits_2.h>
+#include <CGAL/Progressive_medial_axis_2/Medial_axis_2.h>
+#include <CGAL/Progressive_medial_axis_2/internal/Union.h>
+
+namespace CGAL {
+
+/*!
+\ingroup PkgProgressiveMedialAxis2Ref
+
+The medial axis of the union of two polygons, from their medial axes (the
+paper's Fig. 24): `a` and `b` are the axes of two whole polygons (holes
+allowed; from `CGAL::medial_axis_2()` or the last step of a
+`Progressive_medial_axis_2`) with disjoint interiors whose boundaries share
+one or more chains of edges: the same points, in opposite directions.  The
+union must be a valid polygon (its rings may touch at vertices).  Chains of
+any length are merged, and several chains make the union enclose holes.
+
+The result is the axis of the union, the same as `CGAL::medial_axis_2()` of
+the union gives.  Its polygon is numbered as follows (the ids of its
+generators refer to it; `shape_rings()` and `point()` give it): the outer
+ring first, counter-clockwise, then the holes, clockwise; each ring starts
+at the union vertex that comes first in input order (the vertices of `a`
+before those of `b`, by ring and index), and the holes come in the order of
+those vertices.
+
+Cost: the two axes are copied into the result and the union's rings are
+found and validated, in time linear in the sizes of `a` and `b`; the merges
+themselves cost in proportion to the cells that touch the shared chains.
+`a` and `b` are left as they are.
+
+Throws `Progressive_medial_axes::Input_error`, with one line naming the
+problem, when an axis is not the axis of a whole polygon, when the polygons
+share no edge, when they overlap, or when the union is not a valid polygon.
+
+\tparam Traits a model of `ProgressiveMedialAxisTraits_2` whose kernel is `K`.
+*/
+template <class K, class Traits>
+Medial_axis_2<K> medial_axis_union_2(const Medial_axis_2<K>& a, const Medial_axis_2<K>& b, const Traits& traits,
+                                     Progressive_medial_axes::Medial_axis_union_statistics* statistics = nullptr)
+{
+  typedef Progressive_medial_axes::internal::Medial_axis_access Access;
+  if(!Access::data(a) || !Access::data(b))
+    throw Progressive_medial_axes::Input_error("the union of an empty medial axis");
+  Progressive_medial_axes::internal::Medial_axis_union<Traits> driver(*Access::data(a), *Access::data(b), traits);
+  Progressive_medial_axes::Medial_axis_union_statistics stats;
+  auto data = driver.run(stats);
+  if(statistics) *statistics = stats;
+  return Access::make<K>(std::shared_ptr<const typename decltype(data)::element_type>(data));
+}
+
+/*!
+\ingroup PkgProgressiveMedialAxis2Ref
+`medial_axis_union_2()` with the default traits `Progressive_medial_axis_traits_2<K>`
+(every decision exact).
+*/
+template <class K>
+Medial_axis_2<K> medial_axis_union_2(const Medial_axis_2<K>& a, const Medial_axis_2<K>& b)
+{
+  return medial_axis_union_2(a, b, Progressive_medial_axis_traits_2<K>());
+}
+
+} // namespace CGAL
+
+#endif // CGAL_PROGRESSIVE_MEDIAL_AXIS_2_MEDIAL_AXIS_UNION_2_H
