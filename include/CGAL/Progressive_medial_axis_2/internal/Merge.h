@@ -174,15 +174,19 @@ public:
     for(int h = hds_.next(hm); h != hm; h = hds_.next(h)) minus_.push_back(h);
     CGAL_assertion(plus_.size() >= 2 && minus_.size() >= 2);
 
-    // The corners of the merged shape at P and Q.
+    // The corners of the merged shape at P and Q.  A corner of 360 degrees
+    // (the boundary comes back along the same segment: the merge along one
+    // edge of a chain, before the next one is merged) is reflex at Q; at P
+    // it is the tip of the slit that this merge closes (see initialize_slit()).
     const int o_plus = Hds::twin(hp), o_minus = Hds::twin(hm);
     const int a = input_of(hds_.target(hds_.next(o_plus)));
     const int b = input_of(hds_.source(hds_.prev(o_minus)));
     const int c = input_of(hds_.target(hds_.next(o_minus)));
     const int e = input_of(hds_.source(hds_.prev(o_plus)));
     typename Traits::Orientation_2 orientation = traits_.orientation_2_object();
-    const Orientation turn_P = orientation(points_[a], points_[P_], points_[b]);
-    const Orientation turn_Q = orientation(points_[c], points_[Q_], points_[e]);
+    const bool slit_P = hds_.next(o_plus) == o_minus;
+    const Orientation turn_P = slit_P ? RIGHT_TURN : orientation(points_[a], points_[P_], points_[b]);
+    const Orientation turn_Q = c == e ? RIGHT_TURN : orientation(points_[c], points_[Q_], points_[e]);
 
     nodes_.clear();
     events_.clear();
@@ -195,7 +199,10 @@ public:
     nodes_.push_back(Node{Cp_, NO_INDEX, 1, NO_INDEX, NO_INDEX, now_});
     nodes_.push_back(Node{Cm_, 0, NO_INDEX, NO_INDEX, NO_INDEX, now_});
 
-    initialize(turn_P);
+    if(slit_P)
+      initialize_slit();
+    else
+      initialize(turn_P);
     collect_switches();
     run_events(turn_Q == RIGHT_TURN, visitor);
     if(turn_Q == RIGHT_TURN)
@@ -220,6 +227,7 @@ public:
     // A switch vertex left with two edges of the same two cells is no longer a vertex.
     for(int w : switch_vertex_plus_) hds_.remove_degree_two_vertex(w);
     for(int w : switch_vertex_minus_) hds_.remove_degree_two_vertex(w);
+    if(slit_P) finish_slit();
     return stats_;
   }
 
@@ -388,6 +396,70 @@ private:
     hds_.link(hds_.prev(te_k), first_open);
     hds_.link(last_open_twin, hds_.next(te_1));
     hds_.vertex(vP_).halfedge = last_open_twin;
+  }
+
+  // ---- initialization at P, the tip of a slit ----
+  // P is a corner of 360 degrees: the separator PQ is the next edge of a
+  // chain of shared edges whose previous edge was merged (a union of two
+  // axes, CGAL::medial_axis_union_2()).  After this merge P is a point inside
+  // the shape, no generator: its point cell, which is the tip's cell at the
+  // start (the tip of the retracting slit is at P), goes.  Its cycle is
+  //   n+ (vP -> w_0, the normal of C+), f_1 (w_0 -> w_1), ..., f_m (w_m-1 -> w_m),
+  //   n- (w_m -> vP, the normal of C-),
+  // with g_i across f_i.  L starts as [C+, g_1, ..., g_m, C-]: the wall
+  // between g_i and g_i+1, which ends at w_i, goes on as the open edge
+  // between them (as at a switch point, all at the start time); C+ and C-
+  // are walked from w_0 and w_m (their normals at P dropped).  At the end the
+  // point cell, its edges, vP, w_0 and w_m are deleted, and w_1 ... w_m-1
+  // have two edges of the same two cells left.
+  void initialize_slit()
+  {
+    const int Pc = face_across(plus_.back());
+    // (each of C+, C- keeps an edge: their normals at P and Q are parallel)
+    if(!is_point_at(Pc, P_) || face_across(minus_.front()) != Pc || plus_.size() < 2 || minus_.size() < 2)
+      throw Merge_anomaly();
+    slit_cycle_.clear();
+    const int n_plus = Hds::twin(plus_.back()), n_minus = Hds::twin(minus_.front());
+    for(int h = hds_.next(n_plus); h != n_minus; h = hds_.next(h)) slit_cycle_.push_back(h);   // f_1 .. f_m
+    const int m = int(slit_cycle_.size());
+    plus_.pop_back();
+    minus_.erase(minus_.begin());
+    if(m < 1 || face_across(plus_.back()) != face_across(slit_cycle_.front()) ||
+       face_across(minus_.front()) != face_across(slit_cycle_.back()))
+      throw Merge_anomaly();
+    slit_face_ = Pc;
+    slit_w0_ = hds_.source(slit_cycle_.front());
+    slit_wm_ = hds_.target(slit_cycle_.back());
+    slit_inner_.clear();
+    int prev = 0;
+    std::vector<int> nodes;
+    for(int f : slit_cycle_) {
+      prev = insert_after(prev, face_across(f));
+      nodes.push_back(prev);
+    }
+    for(int i = 0; i + 1 < m; ++i) {
+      const int w = hds_.target(slit_cycle_[std::size_t(i)]);
+      const int te_a = Hds::twin(slit_cycle_[std::size_t(i)]), te_b = Hds::twin(slit_cycle_[std::size_t(i + 1)]);
+      const int h = open_edge(w, face_across(slit_cycle_[std::size_t(i)]), face_across(slit_cycle_[std::size_t(i + 1)]));
+      hds_.link(hds_.prev(te_a), h);
+      hds_.link(Hds::twin(h), hds_.next(te_b));
+      hds_.vertex(w).halfedge = Hds::twin(h);
+      nodes_[std::size_t(nodes[std::size_t(i)])].right_he = h;
+      slit_inner_.push_back(w);
+    }
+    slit_cycle_.push_back(n_plus);
+    slit_cycle_.push_back(n_minus);
+    for(int n : nodes) update_candidate(n);
+  }
+
+  void finish_slit()
+  {
+    for(int h : slit_cycle_) hds_.delete_edge(h);
+    hds_.delete_face(slit_face_);
+    hds_.delete_vertex(vP_);
+    hds_.delete_vertex(slit_w0_);
+    hds_.delete_vertex(slit_wm_);
+    for(int w : slit_inner_) hds_.remove_degree_two_vertex(w);
   }
 
   // ---- the switch points of both cells, in order along the separator ----
@@ -710,6 +782,9 @@ private:
   std::vector<int> heap_;
   std::size_t live_events_ = 0;
   std::vector<int> chain_nodes_, chain_edges_;
+  // the point cell of P when P is the tip of a slit (initialize_slit())
+  int slit_face_ = NO_INDEX, slit_w0_ = NO_INDEX, slit_wm_ = NO_INDEX;
+  std::vector<int> slit_cycle_, slit_inner_;
 };
 
 } // namespace internal

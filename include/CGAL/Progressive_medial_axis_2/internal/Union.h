@@ -33,16 +33,19 @@
 //   3. The two structures are copied into one (the inputs are left as they
 //      are: this is linear in their size, and the only part of the cost that
 //      is not local) and their point indices renumbered to the union's.
-//   4. The merges, one per chain: the first joins the two components, each
-//      further one closes a ring around a hole of the union.  Each merge
-//      costs in proportion to the cells it touches.
+//   4. The merges, chain after chain, each edge of a chain after the one
+//      before it.  The first merge of the first chain joins the two
+//      components; the first merge of each further chain closes a ring
+//      around a hole of the union.  After the merge along an edge PQ of a
+//      chain, Q is a corner of 360 degrees (the next edge of the chain lies
+//      on both sides of the shape: a slit), reflex, with a point cell; the
+//      merge along the next edge starts at that tip, makes Q a point inside
+//      the union and removes its cell (Medial_merge::initialize_slit()).
+//      Each merge costs in proportion to the cells it touches.
 //
-// Not supported yet: chains of several edges.  The vertices inside such a
-// chain become points inside the union; merging along the chain's edges one
-// by one, the merge along the second edge starts at a corner of 360 degrees
-// (the tip of a slit) whose point cell must vanish, which the engine's merge
-// along one segment does not do.  The paper merges along the whole chain;
-// the merge needs that extension.  Such unions are refused with an error.
+// Not supported yet: a ring shared as a whole (one polygon fills a hole of
+// the other exactly): the last merge along it would close a crack with both
+// ends inside the union.  Such unions are refused with an error.
 //
 // The union's points are its rings' (the numbering that the ids refer to),
 // followed by the places inside shared chains, which are no vertices of the
@@ -220,6 +223,7 @@ private:
     std::vector<char> in_chain(std::size_t(corners(0)), 0);
     for(const auto& c : chains_)
       for(int e : c) in_chain[std::size_t(e)] = 1;
+    const std::size_t cyclic_from = chains_.size();
     for(int k = 0; k < corners(0); ++k) {   // whole rings shared (a hole filled exactly)
       if(shared_[0][std::size_t(k)] == NO_INDEX || in_chain[std::size_t(k)]) continue;
       chains_.emplace_back();
@@ -228,17 +232,12 @@ private:
         chains_.back().push_back(e);
       }
     }
-    // A vertex inside a chain becomes a point inside the union: the merge
-    // along the chain's second edge starts at a corner of 360 degrees (the
-    // tip of a slit) whose point cell must vanish, and the engine's merge
-    // along one segment does not do that (region growing and the divide and
-    // conquer never make a polygon vertex interior).  The paper merges along
-    // the whole chain at once; until the merge does, such unions are refused.
-    for(const auto& c : chains_)
-      if(c.size() > 1)
-        throw Input_error("not supported yet: the polygons share a chain of " + std::to_string(c.size()) +
-                          " edges (from " + where(0, c.front()) +
-                          "); unions along chains of one edge each are merged (a chain with a vertex inside it is not)");
+    // A ring shared as a whole (the second polygon fills a hole of the
+    // first exactly, or the other way round): its last edge would be a crack
+    // with both ends inside the union, which the merge does not close.
+    for(std::size_t c = cyclic_from; c < chains_.size(); ++c)
+      throw Input_error("not supported yet: a whole ring is shared (" + where(0, chains_[c].front()) +
+                        "): one polygon fills a hole of the other exactly");
   }
 
   int prev(int x, int k) const
