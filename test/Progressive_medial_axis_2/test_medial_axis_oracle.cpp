@@ -15,6 +15,9 @@
 #include <CGAL/Progressive_medial_axis_2/maximum_inscribed_circle_2.h>
 #include <CGAL/Progressive_medial_axis_2/medial_axis_union_2.h>
 #include <CGAL/Simple_cartesian.h>
+#include <CGAL/Constrained_Delaunay_triangulation_2.h>
+#include <CGAL/Triangulation_vertex_base_with_info_2.h>
+#include <CGAL/Polygon_2_algorithms.h>
 #include <CGAL/CORE_Expr.h>
 #include <pma_tool/medial_axis_io.h>
 #include <pma_tool/polygon_io.h>
@@ -720,6 +723,50 @@ void union_tests(Checker<Traits>& checker, const Options& o)
     ++count;
     if(pma_test::failures() > 20) return;
   }
+  // real and synthetic outlines split along diagonals of their constrained
+  // Delaunay triangulation (one shared edge between two parts with long
+  // cells of real data), three diagonals each
+  typedef CGAL::Triangulation_vertex_base_with_info_2<int, CGAL::Epick> Vb;
+  typedef CGAL::Constrained_triangulation_face_base_2<CGAL::Epick> Fb;
+  typedef CGAL::Constrained_Delaunay_triangulation_2<CGAL::Epick, CGAL::Triangulation_data_structure_2<Vb, Fb> > CDT;
+  std::size_t diagonals = 0;
+  for(const char* shape : {"syn_comb50", "syn_maze20", "syn_spiral20", "syn_star2k", "syn_sliver500", "c1m_GBR_0"}) {
+    const Rings rings = pma_tool::read_polygon_file<Point>(std::string(PMA_TEST_DATA) + "/" + shape + ".wkt");
+    if(rings.size() != 1 || (o.quick && std::string(shape) == "c1m_GBR_0")) continue;
+    const std::vector<Point>& ring = rings[0];
+    const int n = int(ring.size());
+    CDT cdt;
+    std::vector<CDT::Vertex_handle> vh;
+    for(int i = 0; i < n; ++i) {
+      vh.push_back(cdt.insert(ring[std::size_t(i)]));
+      vh.back()->info() = i;
+    }
+    for(int i = 0; i < n; ++i) cdt.insert_constraint(vh[std::size_t(i)], vh[std::size_t((i + 1) % n)]);
+    std::vector<std::pair<int, int> > found;
+    for(auto e = cdt.finite_edges_begin(); e != cdt.finite_edges_end(); ++e) {
+      if(cdt.is_constrained(*e)) continue;
+      int i = e->first->vertex(CDT::cw(e->second))->info(), j = e->first->vertex(CDT::ccw(e->second))->info();
+      if(i > j) std::swap(i, j);
+      const Point mid = CGAL::midpoint(ring[std::size_t(i)], ring[std::size_t(j)]);
+      if(CGAL::bounded_side_2(ring.begin(), ring.end(), mid, CGAL::Epick()) == CGAL::ON_BOUNDED_SIDE) found.emplace_back(i, j);
+    }
+    std::sort(found.begin(), found.end());
+    for(int k = 1; k <= 3 && !found.empty(); ++k) {
+      const auto d = found[found.size() * std::size_t(k) / 4];
+      Rings a{std::vector<Point>(ring.begin() + d.first, ring.begin() + d.second + 1)}, b(1);
+      for(int i = d.second; i < n; ++i) b[0].push_back(ring[std::size_t(i)]);
+      for(int i = 0; i <= d.first; ++i) b[0].push_back(ring[std::size_t(i)]);
+      const std::string name = std::string("union of ") + shape + " split along the diagonal " + std::to_string(d.first) +
+                               "-" + std::to_string(d.second);
+      try {
+        const MA u = CGAL::medial_axis_union_2(axis(a), axis(b), Traits());
+        checker.compare(u, "union", true, name, rings_of(u));
+      } catch(const std::exception& e) {
+        CHECK(false, name << ": " << e.what());
+      }
+      ++diagonals;
+    }
+  }
   // errors, with the inputs untouched
   auto square = [](double x, double y, double d) {
     return Rings{{Point(x, y), Point(x + d, y), Point(x + d, y + d), Point(x, y + d)}};
@@ -752,7 +799,7 @@ void union_tests(Checker<Traits>& checker, const Options& o)
     }
     CHECK(what.find("not the axis of a whole polygon") != std::string::npos, "union with a progressive step: '" << what << "'");
   }
-  std::cout << "union: " << count << " splits\n";
+  std::cout << "union: " << count << " splits, " << diagonals << " outlines split along a diagonal\n";
 }
 
 template <class Traits>
