@@ -18,6 +18,18 @@ if(TARGET sdg_pairs)
   set_tests_properties(tool PROPERTIES TIMEOUT 600)
 endif()
 
+# The progressive viewer (--html) in Debian's chromium, headless: screenshots
+# at two slider positions differ and are not blank.  Skipped (exit 77) when
+# chromium or python3-pil is absent.  Debian's python3 (python3-pil).
+find_program(PMA_SYSTEM_PYTHON3 NAMES python3 PATHS /usr/bin NO_DEFAULT_PATH)
+if(PMA_SYSTEM_PYTHON3 AND TARGET progressive_medial_axis)
+  add_test(NAME html_viewer
+           COMMAND ${PMA_SYSTEM_PYTHON3} ${CMAKE_CURRENT_SOURCE_DIR}/html_viewer_test.py
+                   $<TARGET_FILE:progressive_medial_axis> ${PMA_TEST_DATA}/syn_spiral20.wkt
+                   ${CMAKE_CURRENT_BINARY_DIR}/html_viewer)
+  set_tests_properties(html_viewer PROPERTIES SKIP_RETURN_CODE 77 TIMEOUT 300)
+endif()
+
 # compare_pairs SHAPE OURS ORACLE: used by scripts/check_oracle.sh.
 pma_add_test_program(compare_pairs)
 

@@ -197,6 +197,15 @@ void outputs(const std::string& data)
   CHECK(branches > 0, "no branch lines");
   CHECK(stats, "--stats has no max_n_v line");
   CHECK(slurp(tmp + "/a.svg").find("<svg") == 0, "SVG");
+  // the progressive viewer: one page with the frames (seen in a browser by the html_viewer test)
+  Result h = run(tool + " --html " + tmp + "/viewer.html --frames 4 " + shape);
+  const std::string page = slurp(tmp + "/viewer.html");
+  std::size_t svgs = 0;
+  for(std::size_t p = 0; (p = page.find("<svg", p)) != std::string::npos; ++p) ++svgs;
+  CHECK(h.status == 0 && page.find("<!DOCTYPE html>") == 0 && svgs == 4 && page.find("type=\"range\"") != std::string::npos,
+        "--html: exit status " << h.status << ", " << svgs << " pictures");
+  Result hm = run(tool + " --html " + tmp + "/viewer.html " + data + "/invalid/multipolygon_two.wkt");
+  CHECK(hm.status == 2, "--html on two polygons: exit status " << hm.status);
   CHECK(slurp(tmp + "/a.geojson").find("{\"type\":\"FeatureCollection\"") == 0, "GeoJSON");
   CHECK(slurp(tmp + "/a.wkt").find("MULTILINESTRING (") == 0, "WKT axis");
   for(const char* f : {"/frame_000.svg", "/frame_001.svg", "/frame_002.svg"})

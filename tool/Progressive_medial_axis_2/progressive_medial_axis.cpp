@@ -22,6 +22,7 @@
 #include <pma_tool/polygon_io.h>
 #include <pma_tool/medial_axis_io.h>
 #include <pma_tool/medial_axis_drawing.h>
+#include <pma_tool/html_viewer.h>
 #include <pma_tool/repair.h>
 
 #ifdef CGAL_LINKED_WITH_TBB
@@ -42,6 +43,7 @@
 #include <cstdlib>
 #include <fstream>
 #include <iostream>
+#include <sstream>
 #include <string>
 #include <type_traits>
 #include <vector>
@@ -72,6 +74,9 @@ const char* usage_text =
   "  --frames N         with --frames-prefix P, draw N pictures of progressive steps,\n"
   "                     P_000.svg ... (the last one is the final axis)\n"
   "  --frames-prefix P  file name prefix of the progressive pictures\n"
+  "  --html FILE        write a progressive viewer: one self-contained HTML page with\n"
+  "                     the pictures of N progressive steps (--frames N, default 20),\n"
+  "                     a slider over them, pan and zoom\n"
   "  --traits T         filtered (default: exact decisions), epick (double), exact (CORE::Expr)\n"
   "  --threads N        threads of the one-shot computation (default: all hardware threads)\n"
   "  --union OTHER      OTHER is a second polygon whose boundary shares chains of edges\n"
@@ -102,7 +107,7 @@ const char* usage_text =
 struct Options {
   bool pairs = false, branches = false, stats = false;
   long long step = -1;
-  std::string input, union_with, shape_out, svg, geojson, wkt_out, frames_prefix, traits = "filtered";
+  std::string input, union_with, shape_out, svg, geojson, wkt_out, frames_prefix, html, traits = "filtered";
   int frames = 0;
   int threads = 0;   // 0: all hardware threads
   bool prune = false, extend = false, inscribed_circle = false, repair = false;
@@ -177,6 +182,7 @@ Options parse(int argc, char** argv)
     else if(a == "--geojson") o.geojson = value("--geojson");
     else if(a == "--wkt-out") o.wkt_out = value("--wkt-out");
     else if(a == "--frames-prefix") o.frames_prefix = value("--frames-prefix");
+    else if(a == "--html") o.html = value("--html");
     else if(a == "--frames") {
       std::string v = value("--frames");
       char* end = nullptr;
@@ -212,10 +218,10 @@ Options parse(int argc, char** argv)
     else usage_error("more than one input file ('" + o.input + "' and '" + a + "')");
   }
   if(o.input.empty()) usage_error("no input file");
-  if(o.frames > 0 && o.frames_prefix.empty()) usage_error("--frames needs --frames-prefix");
+  if(o.frames > 0 && o.frames_prefix.empty() && o.html.empty()) usage_error("--frames needs --frames-prefix or --html");
   if(!o.repaired_out.empty() && !o.repair) usage_error("--repaired-out needs --repair");
-  if(!o.union_with.empty() && (o.step >= 0 || o.frames > 0 || o.repair))
-    usage_error("--union cannot be combined with --step, --frames or --repair");
+  if(!o.union_with.empty() && (o.step >= 0 || o.frames > 0 || !o.html.empty() || o.repair))
+    usage_error("--union cannot be combined with --step, --frames, --html or --repair");
   if(o.repair && !pma_tool::can_repair())
     usage_error("--repair needs GEOS: this build of the tool has none (install libgeos-dev and rebuild)");
   return o;
@@ -515,9 +521,9 @@ int run(const Options& o)
     if(multi) jobs[k].prefix = "p" + std::to_string(k) + ":";
   }
 
-  const bool progressive = o.step >= 0 || o.frames > 0;
+  const bool progressive = o.step >= 0 || o.frames > 0 || !o.html.empty();
   if(multi && (progressive || !o.shape_out.empty()))
-    usage_error("--step, --frames and --shape-out need one polygon; " + o.input + " has " +
+    usage_error("--step, --frames, --html and --shape-out need one polygon; " + o.input + " has " +
                 std::to_string(input.size()));
   std::unique_ptr<PMA> pma;
   CGAL::Progressive_medial_axes::Medial_axis_union_statistics union_stats;
@@ -588,22 +594,35 @@ int run(const Options& o)
                                            : pma->number_of_steps();
     // progressive pictures: frames at steps spread over the run, the last one final
     std::vector<std::size_t> frame_steps;
-    if(o.frames > 0) {
-      for(int i = 0; i < o.frames; ++i) {
-        double f = (o.frames == 1) ? 1.0 : double(i) / double(o.frames - 1);
-        // spread on a square-root scale so that early, coarse steps are shown
-        frame_steps.push_back(std::size_t(std::llround(f * f * double(last))));
-      }
+    const int frames = o.frames > 0 ? o.frames : (o.html.empty() ? 0 : 20);
+    for(int i = 0; i < frames; ++i) {
+      double f = (frames == 1) ? 1.0 : double(i) / double(frames - 1);
+      // spread on a square-root scale so that early, coarse steps are shown
+      frame_steps.push_back(std::size_t(std::llround(f * f * double(last))));
     }
     std::size_t next_frame = 0;
+    std::vector<pma_tool::Html_frame> html_frames;
     auto draw_frames = [&]() {
       while(next_frame < frame_steps.size() && frame_steps[next_frame] <= pma->current_step()) {
-        char name[32];
-        std::snprintf(name, sizeof(name), "_%03zu.svg", next_frame);
-        std::ofstream f = open_out(o.frames_prefix + name);
-        pma_tool::write_svg(f, pma->medial_axis(),
+        std::ostringstream svg;
+        pma_tool::write_svg(svg, pma->medial_axis(),
                               "step " + std::to_string(pma->current_step()) + " of " +
                                 std::to_string(pma->number_of_steps()), 1000, true);
+        if(!o.frames_prefix.empty()) {
+          char name[32];
+          std::snprintf(name, sizeof(name), "_%03zu.svg", next_frame);
+          std::ofstream f = open_out(o.frames_prefix + name);
+          f << svg.str();
+        }
+        if(!o.html.empty()) {
+          pma_tool::Html_frame h;
+          h.step = pma->current_step();
+          h.steps = pma->number_of_steps();
+          for(const auto& r : pma->medial_axis().shape_rings()) h.vertices += r.size();
+          h.curves = pma->medial_axis().number_of_edges();
+          h.svg = svg.str();
+          html_frames.push_back(std::move(h));
+        }
         ++next_frame;
       }
     };
@@ -611,6 +630,11 @@ int run(const Options& o)
     while(pma->current_step() < last) {
       pma->refine();
       if(!frame_steps.empty()) draw_frames();
+    }
+    if(!o.html.empty()) {
+      std::ofstream f = open_out(o.html);
+      const std::string name = o.input.substr(o.input.find_last_of('/') == std::string::npos ? 0 : o.input.find_last_of('/') + 1);
+      pma_tool::write_html_viewer(f, html_frames, name);
     }
     Job& job = jobs[0];
     job.ma = &pma->medial_axis();
