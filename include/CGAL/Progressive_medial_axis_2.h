@@ -368,6 +368,10 @@ one_shot_medial_axis(const std::vector<std::vector<typename Traits::Kernel::Poin
   stats.anomalies = counts.anomalies;
   stats.redone_merges = counts.redone_merges;
   stats.max_queue = counts.max_queue;
+  stats.parts = counts.parts;
+  stats.parts_seconds_sum = counts.parts_seconds_sum;
+  stats.parts_seconds_max = counts.parts_seconds_max;
+  stats.join_seconds = counts.join_seconds;
   if(statistics)
     *statistics = stats;
   return Medial_axis_access::make<Kernel>(std::shared_ptr<const Data>(data));

@@ -764,6 +764,24 @@ int run(const Options& o)
     std::printf("switch_events %zu\nvanishing_events %zu\nanomalies %zu\nmax_n_v %zu\n",
                 s.switches, s.vanishings, s.anomalies, s.max_queue);
     std::printf("redone_merges %zu\n", s.redone_merges);
+    if(!progressive) {
+      // the task tree of the one-shot divide and conquer: its work (every
+      // task, summed) and span (the longest chain of dependent tasks)
+      std::size_t parts = 0;
+      double parts_sum = 0, parts_max = 0, join = 0, work = read_seconds, span = 0;
+      for(const Job& job : jobs) {
+        const auto& t = job.stats;
+        parts += t.parts;
+        parts_sum += t.parts_seconds_sum;
+        parts_max = std::max(parts_max, t.parts_seconds_max);
+        join += t.join_seconds;
+        work += t.validation_seconds + t.triangulation_seconds + t.parts_seconds_sum + t.join_seconds;
+        span = std::max(span, t.validation_seconds + t.triangulation_seconds + t.parts_seconds_max + t.join_seconds);
+      }
+      std::printf("dc_parts %zu\ntime_parts_sum %.6f\ntime_parts_max %.6f\ntime_parts_join %.6f\ntime_work %.6f\n"
+                  "time_span %.6f\n",
+                  parts, parts_sum, parts_max, join, work, read_seconds + span);
+    }
     if(!o.union_with.empty())
       std::printf("time_union_merge %.6f\ntime_union_join %.6f\nunion_shared_edges %zu\nunion_chains %zu\n",
                   union_stats.merge_seconds, union_stats.join_seconds, union_stats.shared_edges, union_stats.chains);

@@ -39,6 +39,14 @@ struct Progressive_medial_axis_statistics {
   std::size_t anomalies = 0;       ///< events forced to keep the topology valid (0: exact decisions never force one, and the double model redoes such merges)
   std::size_t redone_merges = 0;   ///< merges of the double model redone with exact decisions after an anomaly
   std::size_t max_queue = 0;       ///< n_v: the largest priority queue of any merge
+  // The task tree of a one-shot divide and conquer (`CGAL::medial_axis_2()`):
+  // its work is validation + triangulation + `parts_seconds_sum` +
+  // `join_seconds`, its span (the longest chain of dependent tasks)
+  // validation + triangulation + `parts_seconds_max` + `join_seconds`.
+  std::size_t parts = 0;           ///< one shot: parts of the divide and conquer
+  double parts_seconds_sum = 0;    ///< one shot: the tasks of all parts (built independently), summed
+  double parts_seconds_max = 0;    ///< one shot: the longest task of a part
+  double join_seconds = 0;         ///< one shot: joining the parts and the merges between them (sequential)
 };
 
 /*!

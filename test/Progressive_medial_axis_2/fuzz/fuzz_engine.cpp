@@ -4,8 +4,13 @@
 // repeated coordinates, collinear and cocircular vertices.  Valid polygons
 // (as validate_polygon() says) get their medial axis computed twice, in one
 // shot (divide and conquer) and by region growing to the last step; the two
-// must have the same curves (pairs of generators and lengths).  Built with
-// AddressSanitizer and UBSan; any crash or difference is a failure.
+// must have the same curves (pairs of generators and lengths).  A polygon of
+// one ring is also split along the segment from its first vertex to another
+// one (chosen by the last byte); where both parts are valid, the union of
+// their two axes (medial_axis_union_2) must have the curves of the whole
+// (generators compared by their points: the union numbers its polygon its
+// own way), or report an input error (the segment leaves the polygon).
+// Built with AddressSanitizer and UBSan; any crash or difference is a failure.
 //
 //   fuzz_engine [libFuzzer options] [CORPUS_DIR ...]
 //
@@ -13,6 +18,7 @@
 // vertex, x = high nibble, y = low nibble; 0xFF ends a ring.
 
 #include <CGAL/Progressive_medial_axis_2.h>
+#include <CGAL/Progressive_medial_axis_2/medial_axis_union_2.h>
 #include <CGAL/Progressive_medial_axis_2/validate_polygon.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 
@@ -41,6 +47,48 @@ std::vector<std::tuple<std::string, std::string, double> > curves(const Axis& ma
   }
   std::sort(out.begin(), out.end());
   return out;
+}
+
+// The curves of an axis with generators named by their points.
+template <class Axis>
+std::vector<std::tuple<std::string, std::string, double> > curves_by_points(const Axis& ma)
+{
+  auto name = [](const typename Axis::Face_handle& g) {
+    char buf[128];
+    auto p = Axis::to_xy(g.source()), q = Axis::to_xy(g.target());
+    if(!g.is_point() && q < p) std::swap(p, q);
+    std::snprintf(buf, sizeof(buf), "%s%a,%a,%a,%a", g.is_point() ? "v" : "e", p.first, p.second, q.first, q.second);
+    return std::string(buf);
+  };
+  std::vector<std::tuple<std::string, std::string, double> > out;
+  for(const auto& e : ma.edges()) {
+    std::string a = name(e.first_generator()), b = name(e.second_generator());
+    if(b < a) std::swap(a, b);
+    out.emplace_back(a, b, e.length());
+  }
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+typedef std::vector<std::tuple<std::string, std::string, double> > Curves;
+
+bool same_curves(const Curves& a, const Curves& b, double scale)
+{
+  bool same = a.size() == b.size();
+  for(std::size_t i = 0; same && i < a.size(); ++i)
+    same = std::get<0>(a[i]) == std::get<0>(b[i]) && std::get<1>(a[i]) == std::get<1>(b[i]) &&
+           std::abs(std::get<2>(a[i]) - std::get<2>(b[i])) <= 1e-9 * scale;
+  return same;
+}
+
+void print_difference(const char* what, const Curves& a, const Curves& b)
+{
+  std::fprintf(stderr, "%s differ: %zu and %zu curves\n", what, a.size(), b.size());
+  for(std::size_t i = 0; i < std::max(a.size(), b.size()); ++i) {
+    if(i < a.size()) std::fprintf(stderr, "  %s %s %.17g", std::get<0>(a[i]).c_str(), std::get<1>(a[i]).c_str(), std::get<2>(a[i]));
+    if(i < b.size()) std::fprintf(stderr, "  | %s %s %.17g", std::get<0>(b[i]).c_str(), std::get<1>(b[i]).c_str(), std::get<2>(b[i]));
+    std::fprintf(stderr, "\n");
+  }
 }
 
 } // namespace
@@ -75,18 +123,33 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   double scale = 1;
   for(const auto& r : rings)
     for(const auto& p : r) scale = std::max({scale, std::abs(p.x()), std::abs(p.y())});
-  bool same = a.size() == b.size();
-  for(std::size_t i = 0; same && i < a.size(); ++i)
-    same = std::get<0>(a[i]) == std::get<0>(b[i]) && std::get<1>(a[i]) == std::get<1>(b[i]) &&
-           std::abs(std::get<2>(a[i]) - std::get<2>(b[i])) <= 1e-9 * scale;
-  if(!same) {
-    std::fprintf(stderr, "one-shot and region growing differ: %zu and %zu curves\n", a.size(), b.size());
-    for(std::size_t i = 0; i < std::max(a.size(), b.size()); ++i) {
-      if(i < a.size()) std::fprintf(stderr, "  one-shot %s %s %.17g", std::get<0>(a[i]).c_str(), std::get<1>(a[i]).c_str(), std::get<2>(a[i]));
-      if(i < b.size()) std::fprintf(stderr, "  growing %s %s %.17g", std::get<0>(b[i]).c_str(), std::get<1>(b[i]).c_str(), std::get<2>(b[i]));
-      std::fprintf(stderr, "\n");
-    }
+  if(!same_curves(a, b, scale)) {
+    print_difference("one-shot and region growing", a, b);
     __builtin_trap();
+  }
+  // the union of two parts along the segment from vertex 0 to vertex k
+  const std::size_t n = rings[0].size();
+  if(rings.size() == 1 && n >= 4) {
+    const std::size_t k = 2 + data[size - 1] % (n - 3);
+    std::vector<std::vector<Point> > A(1), B(1);
+    A[0].assign(rings[0].begin(), rings[0].begin() + std::ptrdiff_t(k) + 1);
+    B[0].assign(rings[0].begin() + std::ptrdiff_t(k), rings[0].end());
+    B[0].push_back(rings[0][0]);
+    try {
+      CGAL::Progressive_medial_axes::validate_polygon(A);
+      CGAL::Progressive_medial_axes::validate_polygon(B);
+    } catch(const CGAL::Progressive_medial_axes::Input_error&) {
+      return 0;
+    }
+    try {
+      const auto u = CGAL::medial_axis_union_2(CGAL::medial_axis_2(A), CGAL::medial_axis_2(B));
+      const Curves c = curves_by_points(u), w = curves_by_points(one_shot);
+      if(!same_curves(c, w, scale)) {
+        print_difference("union and whole", c, w);
+        __builtin_trap();
+      }
+    } catch(const CGAL::Progressive_medial_axes::Input_error&) {
+    }
   }
   return 0;
 }

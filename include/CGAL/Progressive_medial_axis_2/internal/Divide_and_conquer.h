@@ -66,6 +66,7 @@
 
 #include <algorithm>
 #include <array>
+#include <chrono>
 #include <cstddef>
 #include <vector>
 
@@ -76,6 +77,9 @@ namespace internal {
 /// Counts of the merges of a divide and conquer (or of a part of it).
 struct Divide_and_conquer_counts {
   std::size_t merges = 0, switches = 0, vanishings = 0, anomalies = 0, redone_merges = 0, max_queue = 0;
+  // the task tree: the parts' tasks (summed, longest) and the sequential join
+  std::size_t parts = 0;
+  double parts_seconds_sum = 0, parts_seconds_max = 0, join_seconds = 0;
   void add(const Divide_and_conquer_counts& o)
   {
     merges += o.merges;
@@ -129,7 +133,9 @@ public:
     // 1. the parts, each in a structure of its own (part 0 in the result's)
     std::vector<Hds> structures(P);
     std::vector<Divide_and_conquer_counts> part_counts(P);
+    std::vector<double> part_seconds(P, 0);
     auto build = [&](std::size_t p) {
+      const auto t0 = std::chrono::steady_clock::now();
       run_part([&] {
         Hds& hds = p == 0 ? engine_.hds() : structures[p];
         if(p > 0) hds.reserve(2 * size_[p] + 16, 4 * size_[p] + 16);
@@ -137,6 +143,7 @@ public:
         build_part(engine, int(p), part_counts[p]);
         engine.resolve_pending();
       });
+      part_seconds[p] = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     };
 #ifdef CGAL_PMA2_USE_TBB
     if(parallel)
@@ -146,6 +153,12 @@ public:
       for(std::size_t p = 0; p < P; ++p) build(p);
     (void)parallel;
     for(const auto& c : part_counts) counts.add(c);
+    counts.parts = P;
+    for(double t : part_seconds) {
+      counts.parts_seconds_sum += t;
+      counts.parts_seconds_max = (std::max)(counts.parts_seconds_max, t);
+    }
+    const auto t_join = std::chrono::steady_clock::now();
 
     // 2. one structure; the merges along the cut diagonals
     Hds& hds = engine_.hds();
@@ -165,6 +178,7 @@ public:
       if(part_[std::size_t(d[0])] != part_[std::size_t(d[1])])
         merge_along(engine_, d[0], d[1], counts);
     engine_.resolve_pending();
+    counts.join_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t_join).count();
     return counts;
   }
 

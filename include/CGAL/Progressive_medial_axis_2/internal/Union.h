@@ -44,8 +44,12 @@
 //      Each merge costs in proportion to the cells it touches.
 //
 // Not supported yet: a ring shared as a whole (one polygon fills a hole of
-// the other exactly): the last merge along it would close a crack with both
-// ends inside the union.  Such unions are refused with an error.
+// the other exactly).  Whatever the order, the last merge along it closes a
+// crack whose two ends are tips: when the retracting tip reaches the far
+// end, the cells of the tip and of that end are one point's cell, and that
+// point is no generator of the union; its cell has to be shared out among
+// its neighbours (the removal of a point site), which the merge does not do.
+// Such unions are refused with an error.
 //
 // The union's points are its rings' (the numbering that the ids refer to),
 // followed by the places inside shared chains, which are no vertices of the
