@@ -196,6 +196,18 @@ void outputs(const std::string& data)
   }
   CHECK(branches > 0, "no branch lines");
   CHECK(stats, "--stats has no max_n_v line");
+  // the one-shot's task tree: the span is at most the work
+  {
+    Result t = run(tool + " --stats --threads 2 " + shape);
+    std::map<std::string, double> v;
+    std::istringstream in(t.out);
+    std::string key, value;
+    while(in >> key >> value) v[key] = std::strtod(value.c_str(), nullptr);
+    CHECK(t.status == 0 && v.count("dc_parts") && v.count("time_work") && v.count("time_span") &&
+            v.count("time_parts_sum") && v.count("time_parts_max") && v.count("time_parts_join") && v["dc_parts"] >= 1 &&
+            v["time_span"] <= v["time_work"] && v["time_parts_max"] <= v["time_parts_sum"],
+          "--stats task tree: " << t.out);
+  }
   CHECK(slurp(tmp + "/a.svg").find("<svg") == 0, "SVG");
   // the progressive viewer: one page with the frames (seen in a browser by the html_viewer test)
   Result h = run(tool + " --html " + tmp + "/viewer.html --frames 4 " + shape);
