@@ -10,7 +10,8 @@ cmake --build build -j2 --target progressive_medial_axis
 mkdir -p out
 shape=examples/Progressive_medial_axis_2/data/maze20.wkt
 build/tool/Progressive_medial_axis_2/progressive_medial_axis --stats \
-  --frames 8 --frames-prefix out/maze20_step \
+  --frames 8 --frames-prefix out/maze20_step --html out/maze20_viewer.html \
   --svg out/maze20_axis.svg --geojson out/maze20_axis.geojson --wkt-out out/maze20_axis.wkt \
   "$shape"
 echo "pictures: out/maze20_step_000.svg ... out/maze20_step_007.svg (progressive), out/maze20_axis.svg (final)"
+echo "viewer: out/maze20_viewer.html (open it in a browser: a slider over the steps, pan and zoom)"
