@@ -298,8 +298,20 @@ private:
     return group_[G.last_x][std::size_t(next(G.last_x, G.last))];
   }
 
+  // The orientation of a cycle: the turn at its smallest point (a convex
+  // vertex), or where the cycle passes that point more than once, the sign
+  // of its area (exact for points of doubles).
   bool counterclockwise(const std::vector<int>& cycle) const
   {
+    const std::size_t m = cycle.size();
+    std::size_t lo = 0;
+    for(std::size_t i = 1; i < m; ++i)
+      if(smaller(group_place(cycle[i]), group_place(cycle[lo]))) lo = i;
+    bool once = true;
+    for(std::size_t i = 0; i < m && once; ++i) once = i == lo || group_place(cycle[i]) != group_place(cycle[lo]);
+    if(once)
+      return traits_.orientation_2_object()(group_place(cycle[(lo + m - 1) % m]), group_place(cycle[lo]),
+                                            group_place(cycle[(lo + 1) % m])) == LEFT_TURN;
     CGAL::Exact_rational twice_area = 0;
     for(std::size_t i = 0; i < cycle.size(); ++i) {
       const Point_2 &p = group_place(cycle[i]), &q = group_place(cycle[(i + 1) % cycle.size()]);
