@@ -767,6 +767,41 @@ void union_tests(Checker<Traits>& checker, const Options& o)
       ++diagonals;
     }
   }
+  // integer grid shapes (exact ties everywhere): two skylines of unit columns
+  // split along the vertical line between them, a chain of unit edges with
+  // flat vertices
+  std::size_t grids = 0;
+  for(int seed = 0; seed < (o.quick ? 30 : 100); ++seed) {
+    pma_test::random_detail::Rng rng(std::uint64_t(seed) * 15485863 + 11);
+    const int k = 2 + int(rng.below(5)), H = 3 + int(rng.below(6));
+    std::vector<int> top(std::size_t(2 * k));
+    for(int& t : top) t = 1 + int(rng.below(std::uint64_t(H)));
+    const int h = (std::min)(top[std::size_t(k - 1)], top[std::size_t(k)]);
+    std::vector<Point> A{Point(0, 0), Point(k, 0)}, B{Point(k, 0), Point(2 * k, 0), Point(2 * k, top[std::size_t(2 * k - 1)])};
+    for(int y = 1; y <= h; ++y) A.push_back(Point(k, y));
+    if(top[std::size_t(k - 1)] > h) A.push_back(Point(k, top[std::size_t(k - 1)]));
+    for(int x = k - 1; x > 0; --x)
+      if(top[std::size_t(x)] != top[std::size_t(x - 1)]) {
+        A.push_back(Point(x, top[std::size_t(x)]));
+        A.push_back(Point(x, top[std::size_t(x - 1)]));
+      }
+    A.push_back(Point(0, top[0]));
+    for(int x = 2 * k - 1; x > k; --x)
+      if(top[std::size_t(x)] != top[std::size_t(x - 1)]) {
+        B.push_back(Point(x, top[std::size_t(x)]));
+        B.push_back(Point(x, top[std::size_t(x - 1)]));
+      }
+    if(top[std::size_t(k)] > h) B.push_back(Point(k, top[std::size_t(k)]));
+    for(int y = h; y > 0; --y) B.push_back(Point(k, y));
+    const std::string name = "union of grid skylines seed " + std::to_string(seed);
+    try {
+      const MA u = CGAL::medial_axis_union_2(axis(Rings{A}), axis(Rings{B}), Traits());
+      checker.compare(u, "union", true, name, rings_of(u));
+    } catch(const std::exception& e) {
+      CHECK(false, name << ": " << e.what() << "\n  a: " << wkt(Rings{A}) << "\n  b: " << wkt(Rings{B}));
+    }
+    ++grids;
+  }
   // errors, with the inputs untouched
   auto square = [](double x, double y, double d) {
     return Rings{{Point(x, y), Point(x + d, y), Point(x + d, y + d), Point(x, y + d)}};
@@ -799,7 +834,8 @@ void union_tests(Checker<Traits>& checker, const Options& o)
     }
     CHECK(what.find("not the axis of a whole polygon") != std::string::npos, "union with a progressive step: '" << what << "'");
   }
-  std::cout << "union: " << count << " splits, " << diagonals << " outlines split along a diagonal\n";
+  std::cout << "union: " << count << " splits, " << diagonals << " outlines split along a diagonal, " << grids
+            << " grid skylines\n";
 }
 
 template <class Traits>
