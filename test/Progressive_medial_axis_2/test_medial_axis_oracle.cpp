@@ -802,18 +802,20 @@ void union_tests(Checker<Traits>& checker, const Options& o)
     }
     ++grids;
   }
-  // errors, with the inputs untouched
+  // the errors
   auto square = [](double x, double y, double d) {
     return Rings{{Point(x, y), Point(x + d, y), Point(x + d, y + d), Point(x, y + d)}};
   };
-  auto expect_error = [&](const Rings& ra, const Rings& rb, const std::string& words) {
-    const MA a = axis(ra), b = axis(rb);
-    std::string what;
+  auto error_of = [](const MA& a, const MA& b) {
     try {
       CGAL::medial_axis_union_2(a, b, Traits());
     } catch(const CGAL::Progressive_medial_axes::Input_error& e) {
-      what = e.what();
+      return std::string(e.what());
     }
+    return std::string();
+  };
+  auto expect_error = [&](const Rings& ra, const Rings& rb, const std::string& words) {
+    const std::string what = error_of(axis(ra), axis(rb));
     CHECK(what.find(words) != std::string::npos, "union of " << wkt(ra) << " and " << wkt(rb) << ": error '" << what
                                                            << "', expected '" << words << "'");
   };
@@ -825,13 +827,7 @@ void union_tests(Checker<Traits>& checker, const Options& o)
   {
     // step 0 of a hexagon: one triangle of it
     CGAL::Progressive_medial_axis_2<Traits> p(Rings{{Point(0, 0), Point(1, -1), Point(2, 0), Point(2, 1), Point(1, 2), Point(0, 1)}});
-    const MA b = axis(Rings{{Point(2, 0), Point(0, 0), Point(1, -3)}});
-    std::string what;
-    try {
-      CGAL::medial_axis_union_2(p.medial_axis(), b, Traits());
-    } catch(const CGAL::Progressive_medial_axes::Input_error& e) {
-      what = e.what();
-    }
+    const std::string what = error_of(p.medial_axis(), axis(Rings{{Point(2, 0), Point(0, 0), Point(1, -3)}}));
     CHECK(what.find("not the axis of a whole polygon") != std::string::npos, "union with a progressive step: '" << what << "'");
   }
   std::cout << "union: " << count << " splits, " << diagonals << " outlines split along a diagonal, " << grids

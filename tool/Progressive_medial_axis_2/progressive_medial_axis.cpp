@@ -268,6 +268,28 @@ auto restore_filter_counters(const C& c, int) -> decltype(Traits::filter_statist
 template <class Traits, class C>
 void restore_filter_counters(const C&, long) {}
 
+// Adds the counters and times of t to s (the largest queue: the larger; the
+// longest part of a divide and conquer: the longer).
+void add_statistics(CGAL::Progressive_medial_axis_statistics& s, const CGAL::Progressive_medial_axis_statistics& t)
+{
+  s.input_vertices += t.input_vertices;
+  s.holes += t.holes;
+  s.triangles += t.triangles;
+  s.merges += t.merges;
+  s.validation_seconds += t.validation_seconds;
+  s.triangulation_seconds += t.triangulation_seconds;
+  s.merge_seconds += t.merge_seconds;
+  s.switches += t.switches;
+  s.vanishings += t.vanishings;
+  s.anomalies += t.anomalies;
+  s.redone_merges += t.redone_merges;
+  s.max_queue = std::max(s.max_queue, t.max_queue);
+  s.parts += t.parts;
+  s.parts_seconds_sum += t.parts_seconds_sum;
+  s.parts_seconds_max = std::max(s.parts_seconds_max, t.parts_seconds_max);
+  s.join_seconds += t.join_seconds;
+}
+
 // One polygon of the input, its axis and what is computed from it.
 template <class Traits>
 struct Polygon_job {
@@ -372,21 +394,24 @@ int run(const Options& o)
     std::cerr << o.input << ": " << e.what() << "\n";
     return 2;
   }
-  // --union: the second polygon, checked as the first
+  // --union: the second polygon, read and checked here (INPUT's is checked
+  // below, with every input polygon)
   std::vector<pma_tool::Input_polygon<CGAL::Epick::Point_2> > other;
   if(!o.union_with.empty()) {
-    for(const auto* f : {&o.input, &o.union_with}) {
-      try {
-        if(f == &o.union_with) other = pma_tool::read_polygons_file<CGAL::Epick::Point_2>(o.union_with);
-        const auto& polygons = f == &o.input ? input : other;
-        if(polygons.size() != 1)
-          throw CGAL::Progressive_medial_axes::Input_error("--union needs one polygon in each file, found " +
-                                                           std::to_string(polygons.size()));
-        CGAL::Progressive_medial_axes::validate_polygon(polygons[0].rings);
-      } catch(const CGAL::Progressive_medial_axes::Input_error& e) {
-        std::cerr << *f << ": " << e.what() << "\n";
-        return 2;
-      }
+    const std::string* file = &o.input;
+    auto one_polygon = [](std::size_t n) {
+      if(n != 1)
+        throw CGAL::Progressive_medial_axes::Input_error("--union needs one polygon in each file, found " + std::to_string(n));
+    };
+    try {
+      one_polygon(input.size());
+      file = &o.union_with;
+      other = pma_tool::read_polygons_file<CGAL::Epick::Point_2>(o.union_with);
+      one_polygon(other.size());
+      CGAL::Progressive_medial_axes::validate_polygon(other[0].rings);
+    } catch(const CGAL::Progressive_medial_axes::Input_error& e) {
+      std::cerr << *file << ": " << e.what() << "\n";
+      return 2;
     }
   }
   double read_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
@@ -542,17 +567,9 @@ int run(const Options& o)
       std::cerr << o.input << " and " << o.union_with << ": " << e.what() << "\n";
       return 2;
     }
-    job.stats.input_vertices += sb.input_vertices;
-    job.stats.holes += sb.holes;
-    job.stats.triangles += sb.triangles;
-    job.stats.triangulation_seconds += sb.triangulation_seconds;
-    job.stats.merge_seconds += sb.merge_seconds;
-    job.stats.merges += sb.merges;
-    job.stats.switches += sb.switches + union_stats.switches;
-    job.stats.vanishings += sb.vanishings + union_stats.vanishings;
-    job.stats.anomalies += sb.anomalies;
-    job.stats.redone_merges += sb.redone_merges;
-    job.stats.max_queue = std::max(job.stats.max_queue, sb.max_queue);
+    add_statistics(job.stats, sb);
+    job.stats.switches += union_stats.switches;
+    job.stats.vanishings += union_stats.vanishings;
     job.stats.validation_seconds = 0;   // (counted in time_read with the reading)
     job.ma = &job.one_shot;
     analyse(o, job);
@@ -735,17 +752,7 @@ int run(const Options& o)
     double centerline_length = 0, prune_seconds = 0;
     for(const Job& job : jobs) {
       const auto& t = job.stats;
-      s.input_vertices += t.input_vertices;
-      s.holes += t.holes;
-      s.triangles += t.triangles;
-      s.validation_seconds += t.validation_seconds;
-      s.triangulation_seconds += t.triangulation_seconds;
-      s.merge_seconds += t.merge_seconds;
-      s.switches += t.switches;
-      s.vanishings += t.vanishings;
-      s.anomalies += t.anomalies;
-      s.max_queue = std::max(s.max_queue, t.max_queue);
-      s.redone_merges += t.redone_merges;
+      add_statistics(s, t);
       steps += job.steps;
       curves += job.ma->number_of_edges();
       for(const auto& v : job.ma->vertices())
@@ -767,20 +774,16 @@ int run(const Options& o)
     if(!progressive) {
       // the task tree of the one-shot divide and conquer: its work (every
       // task, summed) and span (the longest chain of dependent tasks)
-      std::size_t parts = 0;
-      double parts_sum = 0, parts_max = 0, join = 0, work = read_seconds, span = 0;
+      // (the polygons are independent: the span is that of the longest one)
+      const double work = read_seconds + s.validation_seconds + s.triangulation_seconds + s.parts_seconds_sum + s.join_seconds;
+      double span = 0;
       for(const Job& job : jobs) {
         const auto& t = job.stats;
-        parts += t.parts;
-        parts_sum += t.parts_seconds_sum;
-        parts_max = std::max(parts_max, t.parts_seconds_max);
-        join += t.join_seconds;
-        work += t.validation_seconds + t.triangulation_seconds + t.parts_seconds_sum + t.join_seconds;
         span = std::max(span, t.validation_seconds + t.triangulation_seconds + t.parts_seconds_max + t.join_seconds);
       }
       std::printf("dc_parts %zu\ntime_parts_sum %.6f\ntime_parts_max %.6f\ntime_parts_join %.6f\ntime_work %.6f\n"
                   "time_span %.6f\n",
-                  parts, parts_sum, parts_max, join, work, read_seconds + span);
+                  s.parts, s.parts_seconds_sum, s.parts_seconds_max, s.join_seconds, work, read_seconds + span);
     }
     if(!o.union_with.empty())
       std::printf("time_union_merge %.6f\ntime_union_join %.6f\nunion_shared_edges %zu\nunion_chains %zu\n",

@@ -51,6 +51,40 @@ struct Medial_axis_access {
     return m.d_;
   }
 };
+
+// Where an outer boundary is pinched (it touches itself at a place), the
+// interior has several parts, each with a counter-clockwise boundary cycle
+// (a lobe).  A lobe that shares a place with the outer cycle (cycles[0]) is
+// spliced into it there, so that the outer ring passes that place twice, as
+// a pinched input ring does: the ring enters the place from the outer
+// cycle's previous vertex and leaves along the lobe, so that each edge starts
+// at the corner that is its source.  `same_place(u, v)` tells whether two
+// cycle vertices are one place, `counterclockwise(c)` a cycle's orientation.
+template <class Same_place, class Counterclockwise>
+void splice_lobes(std::vector<std::vector<int> >& cycles, const Same_place& same_place,
+                  const Counterclockwise& counterclockwise)
+{
+  bool spliced = true;
+  while(spliced && cycles.size() > 1) {
+    spliced = false;
+    for(std::size_t i = 1; i < cycles.size() && !spliced; ++i) {
+      if(!counterclockwise(cycles[i])) continue;
+      std::vector<int>& o = cycles[0];
+      const std::vector<int>& l = cycles[i];
+      for(std::size_t a = 0; a < o.size() && !spliced; ++a)
+        for(std::size_t b = 0; b < l.size() && !spliced; ++b) {
+          if(!same_place(o[a], l[b])) continue;
+          // o[0..a-1], the lobe from l[b] round to l[b-1], then o[a..]
+          std::vector<int> joined(o.begin(), o.begin() + std::ptrdiff_t(a));
+          for(std::size_t k = 0; k < l.size(); ++k) joined.push_back(l[(b + k) % l.size()]);
+          joined.insert(joined.end(), o.begin() + std::ptrdiff_t(a), o.end());
+          o.swap(joined);
+          cycles.erase(cycles.begin() + std::ptrdiff_t(i));
+          spliced = true;
+        }
+    }
+  }
+}
 } // namespace internal
 } // namespace Progressive_medial_axes
 
@@ -542,35 +576,12 @@ private:
     return std::size_t(std::distance(r.begin(), r.end()));
   }
 
-  // Where the outer ring is pinched (it touches itself at a vertex), the
-  // interior has several parts, each with a counter-clockwise boundary cycle
-  // (a lobe).  A lobe that shares a place with the outer ring (cycles[0]) is
-  // spliced into it there, so that the outer ring passes that place twice,
-  // as the input's ring did.
+  // Lobes of a pinched outer ring spliced into it (see internal::splice_lobes()).
   void splice_lobes(std::vector<std::vector<int> >& cycles) const
   {
-    bool spliced = true;
-    while(spliced && cycles.size() > 1) {
-      spliced = false;
-      for(std::size_t i = 1; i < cycles.size() && !spliced; ++i) {
-        if(!counterclockwise(cycles[i])) continue;
-        std::vector<int>& o = cycles[0];
-        const std::vector<int>& l = cycles[i];
-        for(std::size_t a = 0; a < o.size() && !spliced; ++a)
-          for(std::size_t b = 0; b < l.size() && !spliced; ++b) {
-            if(d_->points[o[a]] != d_->points[l[b]]) continue;
-            // o[0..a-1], the lobe from l[b] round to l[b-1], then o[a..]: the
-            // ring enters the place from o[a-1] and leaves along the lobe, so
-            // that each edge starts at the corner that is its source
-            std::vector<int> joined(o.begin(), o.begin() + std::ptrdiff_t(a));
-            for(std::size_t k = 0; k < l.size(); ++k) joined.push_back(l[(b + k) % l.size()]);
-            joined.insert(joined.end(), o.begin() + std::ptrdiff_t(a), o.end());
-            o.swap(joined);
-            cycles.erase(cycles.begin() + std::ptrdiff_t(i));
-            spliced = true;
-          }
-      }
-    }
+    Progressive_medial_axes::internal::splice_lobes(
+      cycles, [this](int u, int v) { return d_->points[u] == d_->points[v]; },
+      [this](const std::vector<int>& c) { return counterclockwise(c); });
   }
   // The sign of the area of a cycle (exact for points of doubles).
   bool counterclockwise(const std::vector<int>& c) const

@@ -36,31 +36,14 @@ namespace {
 typedef CGAL::Epick K;
 typedef K::Point_2 Point;
 
-template <class Axis>
-std::vector<std::tuple<std::string, std::string, double> > curves(const Axis& ma)
-{
-  std::vector<std::tuple<std::string, std::string, double> > out;
-  for(const auto& e : ma.edges()) {
-    std::string a = e.first_generator().id(), b = e.second_generator().id();
-    if(b < a) std::swap(a, b);
-    out.emplace_back(a, b, e.length());
-  }
-  std::sort(out.begin(), out.end());
-  return out;
-}
+typedef std::vector<std::tuple<std::string, std::string, double> > Curves;
 
-// The curves of an axis with generators named by their points.
-template <class Axis>
-std::vector<std::tuple<std::string, std::string, double> > curves_by_points(const Axis& ma)
+// The curves of an axis (pairs of generators, as `name` names them, and
+// lengths), sorted.
+template <class Axis, class Name>
+Curves curves(const Axis& ma, const Name& name)
 {
-  auto name = [](const typename Axis::Face_handle& g) {
-    char buf[128];
-    auto p = Axis::to_xy(g.source()), q = Axis::to_xy(g.target());
-    if(!g.is_point() && q < p) std::swap(p, q);
-    std::snprintf(buf, sizeof(buf), "%s%a,%a,%a,%a", g.is_point() ? "v" : "e", p.first, p.second, q.first, q.second);
-    return std::string(buf);
-  };
-  std::vector<std::tuple<std::string, std::string, double> > out;
+  Curves out;
   for(const auto& e : ma.edges()) {
     std::string a = name(e.first_generator()), b = name(e.second_generator());
     if(b < a) std::swap(a, b);
@@ -70,7 +53,25 @@ std::vector<std::tuple<std::string, std::string, double> > curves_by_points(cons
   return out;
 }
 
-typedef std::vector<std::tuple<std::string, std::string, double> > Curves;
+// ... with generators named by their ids
+template <class Axis>
+Curves curves(const Axis& ma)
+{
+  return curves(ma, [](const typename Axis::Face_handle& g) { return g.id(); });
+}
+
+// ... with generators named by their points
+template <class Axis>
+Curves curves_by_points(const Axis& ma)
+{
+  return curves(ma, [](const typename Axis::Face_handle& g) {
+    char buf[128];
+    auto p = Axis::to_xy(g.source()), q = Axis::to_xy(g.target());
+    if(!g.is_point() && q < p) std::swap(p, q);
+    std::snprintf(buf, sizeof(buf), "%s%a,%a,%a,%a", g.is_point() ? "v" : "e", p.first, p.second, q.first, q.second);
+    return std::string(buf);
+  });
+}
 
 bool same_curves(const Curves& a, const Curves& b, double scale)
 {

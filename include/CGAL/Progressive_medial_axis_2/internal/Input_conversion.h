@@ -202,6 +202,30 @@ void link_touching_corners(Data& data, const Orientation& orientation)
   }
 }
 
+/// Whether the ring of the m points `at(0)`, ..., `at(m - 1)` runs
+/// counter-clockwise: the turn at its lexicographically smallest vertex (a
+/// convex one), or, where the ring passes that point more than once (it
+/// touches itself there), the sign of its area (exact for points of doubles).
+template <class At, class Orientation>
+bool ring_counterclockwise(std::size_t m, const At& at, const Orientation& orientation)
+{
+  std::size_t lo = 0;
+  for(std::size_t i = 1; i < m; ++i)
+    if(at(i).x() < at(lo).x() || (at(i).x() == at(lo).x() && at(i).y() < at(lo).y())) lo = i;
+  bool self_touch = false;
+  for(std::size_t i = 0; i < m && !self_touch; ++i) self_touch = i != lo && at(i) == at(lo);
+  if(!self_touch)
+    return orientation(at((lo + m - 1) % m), at(lo), at((lo + 1) % m)) == LEFT_TURN;
+  Exact_rational twice_area = 0;
+  for(std::size_t i = 0; i < m; ++i) {
+    const auto& a = at(i);
+    const auto& b = at((i + 1) % m);
+    twice_area += Exact_rational(CGAL::to_double(a.x())) * Exact_rational(CGAL::to_double(b.y())) -
+                  Exact_rational(CGAL::to_double(a.y())) * Exact_rational(CGAL::to_double(b.x()));
+  }
+  return CGAL::sign(twice_area) == POSITIVE;
+}
+
 /// Fills the points of `data`: ring by ring, with each point's ring,
 /// index and successor along the ring with the interior on its left (the
 /// outer ring counter-clockwise, holes clockwise; the orientation of a
@@ -220,22 +244,7 @@ void set_points(Data& data, const std::vector<std::vector<Point_2> >& rings, con
     const int base = int(data.points.size());
     data.ring_start.push_back(base);
     const int m = int(ring.size());
-    int lo = 0;
-    for(int i = 1; i < m; ++i)
-      if(ring[i].x() < ring[lo].x() || (ring[i].x() == ring[lo].x() && ring[i].y() < ring[lo].y())) lo = i;
-    bool ccw = orientation(ring[(lo + m - 1) % m], ring[lo], ring[(lo + 1) % m]) == LEFT_TURN;
-    bool self_touch = false;   // at its smallest point: the turn there does not tell
-    for(int i = 0; i < m && !self_touch; ++i) self_touch = i != lo && ring[i] == ring[lo];
-    if(self_touch) {   // the sign of the area, exact for points of doubles
-      Exact_rational twice_area = 0;
-      for(int i = 0; i < m; ++i) {
-        const auto& a = ring[i];
-        const auto& b = ring[(i + 1) % m];
-        twice_area += Exact_rational(CGAL::to_double(a.x())) * Exact_rational(CGAL::to_double(b.y())) -
-                      Exact_rational(CGAL::to_double(a.y())) * Exact_rational(CGAL::to_double(b.x()));
-      }
-      ccw = CGAL::sign(twice_area) == POSITIVE;
-    }
+    const bool ccw = ring_counterclockwise(ring.size(), [&](std::size_t i) -> const Point_2& { return ring[i]; }, orientation);
     const bool reversed = (r == 0) ? !ccw : ccw;   // holes run clockwise inside
     for(int i = 0; i < m; ++i) {
       data.points.push_back(ring[i]);

@@ -63,7 +63,6 @@
 #include <CGAL/Progressive_medial_axis_2/validate_polygon.h>
 #include <CGAL/Progressive_medial_axis_2/internal/Input_conversion.h>
 #include <CGAL/Progressive_medial_axis_2/internal/Medial_axis_engine.h>
-#include <CGAL/Exact_rational.h>
 
 #include <algorithm>
 #include <array>
@@ -172,6 +171,8 @@ private:
   // the boundary half-edge of every edge (by the corner it starts at).
   void check_complete(int x)
   {
+    const Input_error not_whole(std::string("the medial axis of ") + name(x) +
+                                " is not the axis of a whole polygon (a step of a progressive computation?)");
     const Hds& hds = in_[x]->hds;
     boundary_[x].assign(std::size_t(corners(x)), NO_INDEX);
     int found = 0;
@@ -179,12 +180,12 @@ private:
       if(hds.is_deleted(h) || hds.face_of(h ^ 1) != OUTSIDE || hds.face_of(h) < 0) continue;
       const Hds_face& f = hds.face(hds.face_of(h));
       if(f.is_point || f.p0 < 0 || f.p0 >= corners(x) || next(x, f.p0) != f.p1 || boundary_[x][std::size_t(f.p0)] != NO_INDEX)
-        throw Input_error(std::string("the medial axis of ") + name(x) + " is not the axis of a whole polygon (a step of a progressive computation?)");
+        throw not_whole;
       boundary_[x][std::size_t(f.p0)] = h;
       ++found;
     }
     if(found != corners(x))
-      throw Input_error(std::string("the medial axis of ") + name(x) + " is not the axis of a whole polygon (a step of a progressive computation?)");
+      throw not_whole;
   }
 
   // shared_[x][k]: the edge of the other polygon that is the edge from
@@ -298,27 +299,10 @@ private:
     return group_[G.last_x][std::size_t(next(G.last_x, G.last))];
   }
 
-  // The orientation of a cycle: the turn at its smallest point (a convex
-  // vertex), or where the cycle passes that point more than once, the sign
-  // of its area (exact for points of doubles).
   bool counterclockwise(const std::vector<int>& cycle) const
   {
-    const std::size_t m = cycle.size();
-    std::size_t lo = 0;
-    for(std::size_t i = 1; i < m; ++i)
-      if(smaller(group_place(cycle[i]), group_place(cycle[lo]))) lo = i;
-    bool once = true;
-    for(std::size_t i = 0; i < m && once; ++i) once = i == lo || group_place(cycle[i]) != group_place(cycle[lo]);
-    if(once)
-      return traits_.orientation_2_object()(group_place(cycle[(lo + m - 1) % m]), group_place(cycle[lo]),
-                                            group_place(cycle[(lo + 1) % m])) == LEFT_TURN;
-    CGAL::Exact_rational twice_area = 0;
-    for(std::size_t i = 0; i < cycle.size(); ++i) {
-      const Point_2 &p = group_place(cycle[i]), &q = group_place(cycle[(i + 1) % cycle.size()]);
-      twice_area += CGAL::Exact_rational(CGAL::to_double(p.x())) * CGAL::Exact_rational(CGAL::to_double(q.y())) -
-                    CGAL::Exact_rational(CGAL::to_double(p.y())) * CGAL::Exact_rational(CGAL::to_double(q.x()));
-    }
-    return CGAL::sign(twice_area) == POSITIVE;
+    return ring_counterclockwise(cycle.size(), [&](std::size_t i) -> const Point_2& { return group_place(cycle[i]); },
+                                 traits_.orientation_2_object());
   }
   const Point_2& group_place(int g) const { return place(groups_[std::size_t(g)].first_x, groups_[std::size_t(g)].first); }
   bool smaller(const Point_2& p, const Point_2& q) const { return p.x() < q.x() || (p.x() == q.x() && p.y() < q.y()); }
@@ -348,28 +332,11 @@ private:
     if(outer == cycles.size())
       throw Input_error("the union is not a valid polygon: it has no outer ring");
     std::swap(cycles[0], cycles[outer]);
-    std::swap(ccw[0], ccw[outer]);
     // lobes (the union is pinched): spliced into the outer ring where they touch it
-    for(bool spliced = true; spliced;) {
-      spliced = false;
-      for(std::size_t i = 1; i < cycles.size() && !spliced; ++i) {
-        if(!ccw[i]) continue;
-        std::vector<int>& o = cycles[0];
-        for(std::size_t a = 0; a < o.size() && !spliced; ++a)
-          for(std::size_t b = 0; b < cycles[i].size() && !spliced; ++b) {
-            if(group_place(o[a]) != group_place(cycles[i][b])) continue;
-            std::vector<int> joined(o.begin(), o.begin() + std::ptrdiff_t(a));
-            for(std::size_t k = 0; k < cycles[i].size(); ++k) joined.push_back(cycles[i][(b + k) % cycles[i].size()]);
-            joined.insert(joined.end(), o.begin() + std::ptrdiff_t(a), o.end());
-            o.swap(joined);
-            cycles.erase(cycles.begin() + std::ptrdiff_t(i));
-            ccw.erase(ccw.begin() + std::ptrdiff_t(i));
-            spliced = true;
-          }
-      }
-    }
+    splice_lobes(cycles, [&](int u, int v) { return group_place(u) == group_place(v); },
+                 [&](const std::vector<int>& c) { return counterclockwise(c); });
     for(std::size_t i = 1; i < cycles.size(); ++i)
-      if(ccw[i])
+      if(counterclockwise(cycles[i]))
         throw Input_error("the union is not a valid polygon: its interior is not connected (at " +
                           where(groups_[std::size_t(cycles[i][0])].first_x, groups_[std::size_t(cycles[i][0])].first) + ")");
     // each ring from its first corner in input order (the first polygon's,

@@ -41,10 +41,12 @@ inline void write_html_viewer(std::ostream& out, const std::vector<Html_frame>& 
   for(const Html_frame& f : frames)
     data.push_back({{"step", f.step}, {"steps", f.steps}, {"vertices", f.vertices}, {"curves", f.curves}, {"svg", f.svg}});
   // JSON inside a <script> element: "</" would end it
-  std::string json = data.dump();
-  for(std::size_t p = 0; (p = json.find("</", p)) != std::string::npos; p += 3) json.replace(p, 2, "<\\/");
-  std::string safe_title = nlohmann::json(title).dump();
-  for(std::size_t p = 0; (p = safe_title.find("</", p)) != std::string::npos; p += 3) safe_title.replace(p, 2, "<\\/");
+  auto script_json = [](const nlohmann::json& j) {
+    std::string text = j.dump();
+    for(std::size_t p = 0; (p = text.find("</", p)) != std::string::npos; p += 3) text.replace(p, 2, "<\\/");
+    return text;
+  };
+  const std::string json = script_json(data), safe_title = script_json(title);
   out << R"(<!DOCTYPE html>
 <html lang="en">
 <head>
