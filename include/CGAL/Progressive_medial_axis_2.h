@@ -334,7 +334,7 @@ one_shot_medial_axis(const std::vector<std::vector<typename Traits::Kernel::Poin
   stats.holes = rings.size() - 1;
 
   t0 = std::chrono::steady_clock::now();
-  std::vector<Triangle> triangles = triangulate_rings<Kernel>(data->points, data->ring_start, data->info);
+  std::vector<Triangle> triangles = triangulate_rings<Kernel>(*data);
   stats.triangles = triangles.size();
   stats.triangulation_seconds = seconds_since(t0);
 

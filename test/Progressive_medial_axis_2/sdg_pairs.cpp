@@ -66,11 +66,16 @@ int main(int argc, char** argv)
     return 2;
   }
   // the oracle's own (independent) validity check, for rings that do not touch (where
-  // they touch, the oracle checks the sectors at the shared vertices itself)
+  // they touch, at shared vertices or at a vertex inside an edge, the oracle checks
+  // the sectors there itself)
   std::vector<Point_2> all;
   for(const auto& r : rings) all.insert(all.end(), r.begin(), r.end());
   std::sort(all.begin(), all.end());
-  const bool touching = std::adjacent_find(all.begin(), all.end()) != all.end();
+  bool touching = std::adjacent_find(all.begin(), all.end()) != all.end();
+  try {
+    touching = touching || pma_test::oracle_detail::make_polygon_data(rings).pts.size() > all.size();
+  } catch(const std::invalid_argument&) {   // reported below
+  }
   if(!touching && !pma_test::is_valid_polygon_with_holes(rings)) {
     std::fprintf(stderr, "sdg_pairs: %s: not a valid polygon with holes\n", path.c_str());
     return 2;

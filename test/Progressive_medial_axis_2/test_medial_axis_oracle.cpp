@@ -452,6 +452,59 @@ void degenerate_tests(Checker<Traits>& checker, const Options& o)
   std::cout << "degenerate: " << shapes.size() << " shapes\n";
 }
 
+// A rectangle of w x h unit cells with holes that touch the shell or each other
+// with a vertex inside an edge (T's): in a cell, a triangle whose vertex lies
+// at the middle of the cell's bottom side (on the shell, or on the top edge of
+// a box hole in the cell below), a box whose top edge lies on the cell's top
+// side, or, in the bottom row, an inward notch of the shell whose tip lies on
+// the bottom edge of a box hole in the cell above.  x and y are swapped for
+// odd seeds (vertical edges).
+inline Rings t_touch_grid(int seed)
+{
+  pma_test::random_detail::Rng rng(std::uint64_t(104729 * seed + 3));
+  const int w = 3 + int(rng.below(6)), h = 3 + int(rng.below(6));
+  enum { EMPTY, TRIANGLE, BOX, NOTCH, BOX_ON_NOTCH };
+  std::vector<int> cell(std::size_t(w * h), EMPTY);
+  auto at = [&](int i, int j) -> int& { return cell[std::size_t(j * w + i)]; };
+  for(int i = 0; i < w; ++i)
+    if(rng.below(4) == 0) {
+      at(i, 0) = NOTCH;
+      at(i, 1) = BOX_ON_NOTCH;
+    }
+  for(int j = 0; j < h; ++j)
+    for(int i = 0; i < w; ++i) {
+      if(at(i, j) != EMPTY) continue;
+      const int r = int(rng.below(5));
+      if(r < 2) at(i, j) = TRIANGLE;
+      else if(r < 4 && j + 1 < h) at(i, j) = BOX;
+    }
+  const bool swap = seed % 2 == 1;
+  auto P = [&](double x, double y) { return swap ? Point(y, x) : Point(x, y); };
+  Rings rings(1);
+  for(int i = 0; i < w; ++i) {
+    rings[0].push_back(P(i, 0));
+    if(at(i, 0) == NOTCH) {
+      rings[0].push_back(P(i + 0.25, 0));
+      rings[0].push_back(P(i + 0.5, 1));
+      rings[0].push_back(P(i + 0.75, 0));
+    }
+  }
+  rings[0].push_back(P(w, 0));
+  rings[0].push_back(P(w, h));
+  rings[0].push_back(P(0, h));
+  for(int j = 0; j < h; ++j)
+    for(int i = 0; i < w; ++i) {
+      const double x = i, y = j;
+      if(at(i, j) == TRIANGLE) rings.push_back({P(x + 0.5, y), P(x + 0.8, y + 0.6), P(x + 0.25, y + 0.7)});
+      else if(at(i, j) == BOX) rings.push_back({P(x + 0.2, y + 0.3), P(x + 0.8, y + 0.3), P(x + 0.8, y + 1), P(x + 0.2, y + 1)});
+      else if(at(i, j) == BOX_ON_NOTCH) rings.push_back({P(x + 0.2, y), P(x + 0.8, y), P(x + 0.8, y + 0.7), P(x + 0.2, y + 0.7)});
+      else continue;
+      if(rng.below(2)) std::reverse(rings.back().begin(), rings.back().end());
+    }
+  if(swap) std::reverse(rings[0].begin(), rings[0].end());
+  return rings;
+}
+
 // Rings touching at vertices: the shapes of data/touching (synthetic, and real
 // outlines with such vertices), and random square shells (a vertex every 2
 // units) with diamond holes in the cells of a lattice of spacing 4, which touch
@@ -509,8 +562,22 @@ void touching_tests(Checker<Traits>& checker, const Options& o)
     ++count;
     if(pma_test::failures() > 20) return;
   }
-  std::cout << "touching: " << count << " shapes\n";
+  std::size_t with_t = 0, t_places = 0;
+  for(int seed = 0; seed < seeds; ++seed) {
+    const Rings rings = t_touch_grid(seed);
+    std::size_t n = 0;
+    for(const auto& r : rings) n += r.size();
+    const std::size_t splits = pma_test::oracle_detail::make_polygon_data(rings).pts.size() - n;
+    with_t += splits > 0;
+    t_places += splits;
+    run_polygon(checker, rings, "T-touch grid seed " + std::to_string(seed), seed < 5, {0.3, 0.6});
+    ++count;
+    if(pma_test::failures() > 20) return;
+  }
+  CHECK(with_t > std::size_t(seeds) / 2, "only " << with_t << " T-touch grids have a vertex inside an edge");
+  std::cout << "touching: " << count << " shapes (" << with_t << " with " << t_places << " vertices inside edges)\n";
 }
+
 
 // A polygon split in two along chains of edges, for the union of two axes.
 struct Split {

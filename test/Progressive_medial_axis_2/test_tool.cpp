@@ -84,7 +84,7 @@ void bad_inputs(const std::string& data)
     {"zero_length_edge.wkt", "zero-length edge: ring 0 vertex 2"},
     {"spike.wkt", "spike: ring 0 vertex 4"},
     {"crossing.wkt", "self-intersection: ring 0 edge 0"},
-    {"touching.wkt", "self-intersection: ring 0 vertex 3"},
+    {"t_crossing.wkt", "self-intersection: ring 1 vertex 0 crosses ring 0 edge 1"},
     {"hole_outside.wkt", "hole 1 (ring 1) is not inside the outer ring"},
     {"malformed.geojson", "malformed JSON"},
   };
@@ -498,7 +498,7 @@ void repair(const std::string& data)
     return;
   }
   for(const char* f : {"crossing.wkt", "overlap.wkt", "spike.wkt", "zero_length_edge.wkt", "hole_outside.wkt",
-                       "hole_in_hole.wkt", "touching.wkt"}) {
+                       "hole_in_hole.wkt", "t_crossing.wkt"}) {
     const std::string file = data + "/invalid/" + f, fixed = tmp + "/repaired.wkt";
     Result r = run(tool + " --repair --repaired-out " + fixed + " --pairs --stats " + file);
     CHECK(r.status == 0, f << " --repair: exit status " << r.status << ": " << r.err);
@@ -545,7 +545,9 @@ int main(int argc, char** argv)
   // synthetic shapes and real outlines with such vertices (OpenStreetMap, ODbL)
   for(const char* f : {"syn_hole_corner", "syn_hole_corner_ccw", "syn_hole_edge_vertex", "syn_two_holes",
                        "syn_three_holes", "syn_pinch", "syn_island", "syn_island_min", "syn_reflex_touch",
-                       "syn_hole_at_reflex", "syn_pinch_small", "syn_touch_at_smallest", "c1m_AUS_33982", "c1m_NGA_47424", "c1m_USA_24161", "c1m_NOR_55654"})
+                       "syn_hole_at_reflex", "syn_pinch_small", "syn_touch_at_smallest", "c1m_AUS_33982", "c1m_NGA_47424", "c1m_USA_24161", "c1m_NOR_55654",
+                       // a vertex inside an edge (T's)
+                       "syn_t_self", "syn_t_hole_edge", "syn_t_two_holes_one_point", "syn_t_hole_hole", "syn_t_notch"})
     pairs_against_oracle(data + "/touching/" + f + ".wkt", {-1, 1, 2, 3, 5, 50, 400});
   pairs_against_oracle(data + "/touching/c1m_PNG_21.wkt", {-1, 3000});
   outputs(data);

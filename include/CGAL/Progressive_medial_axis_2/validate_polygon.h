@@ -55,7 +55,11 @@ namespace internal {
       exterior (`check_touching_point()`), after step 6;
    6. no spike (a vertex whose two edges are collinear and fold back, angle 0);
    7. no intersection between two edges other than the common vertex of two
-      consecutive edges of a ring (a Shamos-Hoey sweep, see below);
+      consecutive edges of a ring (a Shamos-Hoey sweep, see below); with
+      `allow_touching`, a vertex may lie inside an edge (an OGC hole touching the outer
+      ring inside one of its edges, a "T"): the sweep records it, and after the sweep
+      the sectors at that place, the edge counting as two rays, must alternate as in
+      step 5 (`vertices_on_edges()` gives the places found);
    8. the rings nest properly: every hole lies directly inside the outer ring.
 
   Steps 3 and 5 sort all the vertices lexicographically (`Compare_xy_2`, ties broken by
@@ -157,7 +161,18 @@ public:
     if(m_allow_touching)
       check_touching_vertices();
     sweep();
+    check_vertices_on_edges();
     check_nesting();
+  }
+
+  /// After `run()`: the places where a vertex lies inside an edge (with
+  /// `allow_touching`), as (the first vertex there in input order, the edge),
+  /// sorted.
+  std::vector<std::pair<std::size_t, std::size_t> > vertices_on_edges() const
+  {
+    std::vector<std::pair<std::size_t, std::size_t> > out(m_on_edges.begin(), m_on_edges.end());
+    std::sort(out.begin(), out.end());
+    return out;
   }
 
 private:
@@ -392,15 +407,21 @@ private:
     }
   }
 
-  void check_touching_point(std::size_t begin, std::size_t end) const
+  void check_touching_point(std::size_t begin, std::size_t end, const std::vector<Id>& through = {}) const
   {
     const Point_2& p = point(m_order[begin]);
-    struct Ray { Id to; Id edge; Id occurrence; bool outgoing; };
+    // `occurrence`: the vertex at p the ray's edge leaves or enters, or for an
+    // edge through p (a T), the edge (`through`)
+    struct Ray { Id to; Id edge; Id occurrence; bool outgoing; bool through; };
     std::vector<Ray> rays;
     for(std::size_t k = begin; k < end; ++k) {
       Id g = m_order[k];
-      rays.push_back(Ray{ next(g), g, g, true });
-      rays.push_back(Ray{ prev(g), prev(g), g, false });
+      rays.push_back(Ray{ next(g), g, g, true, false });
+      rays.push_back(Ray{ prev(g), prev(g), g, false, false });
+    }
+    for(Id t : through) {
+      rays.push_back(Ray{ next(t), t, t, true, true });
+      rays.push_back(Ray{ t, t, t, false, true });
     }
     std::sort(rays.begin(), rays.end(),
               [&](const Ray& a, const Ray& b) { return ccw_before(p, point(a.to), point(b.to)); });
@@ -423,10 +444,46 @@ private:
       const Ray& a = rays[i];
       const Ray& b = rays[(i + 1) % n];
       if(interior_after(a) == interior_after(b)) {
-        Id x = a.occurrence, y = b.occurrence;   // (two edges of one vertex never disagree so)
+        // (the two rays of one vertex or edge never disagree so)
+        if(a.through || b.through) {
+          const Ray& v = a.through ? b : a;
+          const Ray& t = a.through ? a : b;
+          fail("self-intersection: " + vertex_name(v.occurrence) + " crosses " + edge_name(t.edge) + " at " +
+               point_text(v.occurrence), v.occurrence);
+        }
+        Id x = a.occurrence, y = b.occurrence;
         if(y < x) std::swap(x, y);
         fail("self-intersection: " + vertex_name(x) + " and " + vertex_name(y) + " cross at " + point_text(x), x);
       }
+    }
+  }
+
+  // The places where vertices lie inside edges (the sweep's T's): the sectors
+  // there, each such edge counting as two rays, must alternate.
+  void check_vertices_on_edges()
+  {
+    if(m_on_edges.empty())
+      return;
+    // by place (the first vertex there in the sorted order), then edge
+    std::vector<std::pair<std::size_t, Id> > found;
+    for(const auto& ve : m_on_edges) {
+      std::size_t k = std::size_t(std::lower_bound(m_order.begin(), m_order.end(), ve.first, [&](Id g, Id v) {
+                                    return m_compare_xy(point(g), point(v)) == CGAL::SMALLER;
+                                  }) - m_order.begin());
+      found.emplace_back(k, ve.second);
+    }
+    std::sort(found.begin(), found.end());
+    found.erase(std::unique(found.begin(), found.end()), found.end());
+    m_on_edges.clear();
+    for(std::size_t i = 0; i < found.size();) {
+      const std::size_t begin = found[i].first;
+      std::vector<Id> through;
+      for(; i < found.size() && found[i].first == begin; ++i) through.push_back(found[i].second);
+      std::size_t end = begin + 1;
+      while(end < m_order.size() && equal(m_order[begin], m_order[end]))
+        ++end;
+      check_touching_point(begin, end, through);
+      for(Id t : through) m_on_edges.emplace_back(m_order[begin], t);
     }
   }
 
@@ -453,6 +510,8 @@ private:
       CGAL::Orientation o = m_orientation(b.left, b.right, a.left);
       if(o != CGAL::COLLINEAR)
         return o == CGAL::RIGHT_TURN;
+      if(m_allow_touching)   // a T: a's left endpoint inside b; a leaves it above or below
+        return vertex_on_edge_below(a, b);
       record_contact(TOUCHING, a.id, b.id, a.left_id);
       return a.id < b.id;
     }
@@ -460,8 +519,22 @@ private:
     CGAL::Orientation o = m_orientation(a.left, a.right, b.left);
     if(o != CGAL::COLLINEAR)
       return o == CGAL::LEFT_TURN;
+    if(m_allow_touching)
+      return !vertex_on_edge_below(b, a);
     record_contact(TOUCHING, b.id, a.id, b.left_id);
     return a.id < b.id;
+  }
+
+  // Edge a, being inserted, starts inside edge t of the status: is a below t just
+  // right of the sweep line?  (Recorded as a vertex on an edge; collinear is an overlap.)
+  bool vertex_on_edge_below(const Status_edge& a, const Status_edge& t) const
+  {
+    m_on_edges.emplace_back(a.left_id, t.id);
+    CGAL::Orientation o = m_orientation(t.left, t.right, a.right);
+    if(o != CGAL::COLLINEAR)
+      return o == CGAL::RIGHT_TURN;
+    record_contact(OVERLAPPING, a.id, t.id, a.left_id);
+    return a.id < t.id;
   }
 
   void record_contact(Contact contact, Id a, Id b, Id vertex) const
@@ -538,11 +611,24 @@ private:
     CGAL::Orientation o4 = m_orientation(point(b0), point(b1), point(a1));
     if(o3 == o4)
       return;
-    if(o1 == CGAL::COLLINEAR) report_contact(TOUCHING, b, a, b0);
-    if(o2 == CGAL::COLLINEAR) report_contact(TOUCHING, b, a, b1);
-    if(o3 == CGAL::COLLINEAR) report_contact(TOUCHING, a, b, a0);
-    if(o4 == CGAL::COLLINEAR) report_contact(TOUCHING, a, b, a1);
+    if(o1 == CGAL::COLLINEAR) return vertex_on_edge(b, a, b0);
+    if(o2 == CGAL::COLLINEAR) return vertex_on_edge(b, a, b1);
+    if(o3 == CGAL::COLLINEAR) return vertex_on_edge(a, b, a0);
+    if(o4 == CGAL::COLLINEAR) return vertex_on_edge(a, b, a1);
     report_contact(CROSSING, a, b, a);
+  }
+
+  // `vertex`, an endpoint of edge a, lies inside edge b: an error, or with
+  // `allow_touching` a T, checked after the sweep (an edge of `vertex` along b
+  // is an overlap).
+  void vertex_on_edge(Id a, Id b, Id vertex) const
+  {
+    if(!m_allow_touching)
+      report_contact(TOUCHING, a, b, vertex);
+    for(Id other : { prev(vertex), next(vertex) })
+      if(m_orientation(point(b), point(next(b)), point(other)) == CGAL::COLLINEAR)
+        report_contact(OVERLAPPING, other == next(vertex) ? vertex : other, b, vertex);
+    m_on_edges.emplace_back(vertex, b);
   }
 
   void remove_edge(Id e)
@@ -695,6 +781,7 @@ private:
 
   bool m_allow_touching;
   mutable Contact m_contact = NO_CONTACT;
+  mutable std::vector<std::pair<Id, Id> > m_on_edges;   // (vertex, edge) found by the sweep
   mutable Id m_contact_a = 0, m_contact_b = 0, m_contact_vertex = 0;
 };
 
@@ -712,13 +799,16 @@ found (edge `i` of a ring goes from vertex `i` to vertex `(i+1) mod` ring size),
 - a ring with fewer than 3 (distinct) vertices;
 - a non-finite coordinate;
 - a zero-length edge (two consecutive equal vertices);
-- rings that cross at a shared vertex: rings may touch themselves and each other at
-  vertices (holes touching the outer ring or each other, pinches, inverted islands), but
-  there the edges, in angular order, must bound interior and exterior sectors alternately;
+- rings that cross where they touch: rings may touch themselves and each other at
+  vertices (holes touching the outer ring or each other, pinches, inverted islands), and
+  a vertex may lie inside an edge (a "T", such as a hole touching the outer ring inside
+  one of its edges, valid in OGC Simple Features), but there the edges, in angular order
+  (an edge through the place counting twice), must bound interior and exterior sectors
+  alternately;
 - a spike (two consecutive edges collinear and folding back, angle 0);
-- any intersection or contact between two edges that are not consecutive in the same
-  ring (a proper crossing, a vertex lying on another edge, a collinear overlap), whether
-  they belong to the same ring or not;
+- any other intersection or contact between two edges that are not consecutive in the
+  same ring (a proper crossing, a collinear overlap), whether they belong to the same
+  ring or not;
 - a hole not inside the outer ring, or a hole inside another hole.
 
 Runs in \f$O(n \log n)\f$ time for \f$n\f$ vertices in total, using only the exact
@@ -733,6 +823,33 @@ void validate_polygon_rings(const Rings<typename Kernel::Point_2>& rings)
   internal::Polygon_rings_validator<Kernel>(rings, true).run();
 }
 
+namespace internal {
+
+// validate_polygon(), returning the places where a vertex lies inside an edge
+// (T's), as (global index of the first vertex there, global index of the edge).
+template <class Point_2>
+std::vector<std::pair<std::size_t, std::size_t> > validate_and_find_vertices_on_edges(const Rings<Point_2>& rings)
+{
+  typedef typename Kernel_traits<Point_2>::Kernel K;
+  typedef Exact_predicates_kernel_for<K> EK;
+  if constexpr(std::is_same<typename EK::type, K>::value) {
+    Polygon_rings_validator<K> validator(rings, true);
+    validator.run();
+    return validator.vertices_on_edges();
+  } else {
+    Rings<typename EK::type::Point_2> converted;
+    for(const auto& r : rings) {
+      converted.emplace_back();
+      for(const auto& p : r) converted.back().push_back(EK::point(p));
+    }
+    Polygon_rings_validator<typename EK::type> validator(converted, true);
+    validator.run();
+    return validator.vertices_on_edges();
+  }
+}
+
+} // namespace internal
+
 /*!
 \ingroup PkgProgressiveMedialAxis2Ref
 
@@ -746,18 +863,7 @@ run unless told `TRUST_INPUT`.
 template <class Point_2>
 void validate_polygon(const Rings<Point_2>& rings)
 {
-  typedef typename Kernel_traits<Point_2>::Kernel K;
-  typedef internal::Exact_predicates_kernel_for<K> EK;
-  if constexpr(std::is_same<typename EK::type, K>::value) {
-    validate_polygon_rings<K>(rings);
-  } else {
-    Rings<typename EK::type::Point_2> converted;
-    for(const auto& r : rings) {
-      converted.emplace_back();
-      for(const auto& p : r) converted.back().push_back(EK::point(p));
-    }
-    validate_polygon_rings<typename EK::type>(converted);
-  }
+  internal::validate_and_find_vertices_on_edges(rings);
 }
 
 } // namespace Progressive_medial_axes

@@ -44,8 +44,8 @@ public:
   explicit Region_growing(Engine& engine)
     : engine_(engine)
   {
-    const auto& data = engine.data();
-    triangles_ = triangulate_rings<typename Traits::Kernel>(data.points, data.ring_start, data.info);
+    auto& data = engine.data();
+    triangles_ = triangulate_rings<typename Traits::Kernel>(data);
     steps_ = Growth_order(triangles_, data.points.size(), largest_triangle(), places(data.points)).steps();
     added_.assign(triangles_.size(), 0);
     sides_.assign(triangles_.size(), std::array<int, 3>{{NO_INDEX, NO_INDEX, NO_INDEX}});

@@ -24,6 +24,7 @@
 #include <CGAL/Progressive_medial_axis_2/internal/Input_conversion.h>
 #include <CGAL/Progressive_medial_axis_2/internal/Medial_axis_engine.h>
 
+#include <algorithm>
 #include <deque>
 #include <map>
 #include <string>
@@ -50,13 +51,22 @@ inline int side_towards(const std::vector<Triangle>& triangles, int u, int t)
   return e;
 }
 
-/// Triangulates the polygon whose rings are the point ranges
-/// [ring_start[r], ring_start[r+1]) of `points`, consecutive along each ring,
-/// in the kernel of the points (with exact predicates): distinct input
-/// points stay distinct.
-template <class Kernel>
-std::vector<Triangle> triangulate_rings(const std::vector<typename Kernel::Point_2>& points,
-                                        const std::vector<int>& ring_start, const std::vector<Point_info>& info)
+/// Triangulates the polygon of the points of `data` (its edges: each point
+/// to its successor `info[i].next`), in the kernel of the points (with exact
+/// predicates): distinct input points stay distinct.
+///
+/// Where a point lies inside an edge (a "T": an OGC hole touching the outer
+/// ring inside one of its edges), the triangulation splits that edge's
+/// constraint there.  Such an edge is found as a constraint that is not an
+/// edge of the triangulation, and split in `data` too: a new point at the
+/// place (after the input points, named after the first input point there,
+/// the halves keeping the edge's id), then the corners at that place are
+/// linked again (link_touching_corners()).  The place becomes one where
+/// rings touch at vertices; the interior sectors on the edge's side are less
+/// than pi, so the new point is never a reflex corner.  This costs nothing
+/// where there is no T, and needs no validation (TRUST_INPUT).
+template <class Kernel, class Data>
+std::vector<Triangle> triangulate_rings(Data& data)
 {
   typedef Exact_predicates_kernel_for<Kernel> TK;
   typedef typename TK::type K;
@@ -65,31 +75,81 @@ std::vector<Triangle> triangulate_rings(const std::vector<typename Kernel::Point
   typedef Constrained_triangulation_face_base_2<K, Fbi> Fb;
   typedef Triangulation_data_structure_2<Vb, Fb> Tds;
   typedef Constrained_Delaunay_triangulation_2<K, Tds, Exact_predicates_tag> CDT;
+  typedef typename CDT::Vertex_handle Vertex_handle;
 
+  auto& points = data.points;
+  auto& info = data.info;
   std::vector<std::pair<typename K::Point_2, int> > pts;
   pts.reserve(points.size());
   for(std::size_t i = 0; i < points.size(); ++i)
     pts.emplace_back(TK::point(points[i]), int(i));
   CDT cdt;
   cdt.insert(pts.begin(), pts.end());
-  std::vector<typename CDT::Vertex_handle> handle(points.size());
+  std::vector<Vertex_handle> handle(points.size());
   for(auto v = cdt.finite_vertices_begin(); v != cdt.finite_vertices_end(); ++v)
     handle[v->info()] = v;
   // input points at one place (where rings touch): the triangulation keeps
   // one of them; the triangles get the corner of their sector below
-  std::map<typename CDT::Vertex_handle, std::vector<int> > touching;
+  std::map<Vertex_handle, std::vector<int> > touching;
   for(std::size_t i = 0; i < points.size(); ++i)
-    if(handle[i] == typename CDT::Vertex_handle()) {
+    if(handle[i] == Vertex_handle()) {
       handle[i] = cdt.insert(pts[i].first);
       std::vector<int>& at = touching[handle[i]];
       if(at.empty()) at.push_back(handle[i]->info());
       at.push_back(int(i));
     }
-  for(std::size_t r = 0; r + 1 < ring_start.size(); ++r) {
-    int b = ring_start[r], e = ring_start[r + 1];
-    for(int i = b; i < e; ++i)
-      cdt.insert_constraint(handle[i], handle[i + 1 < e ? i + 1 : b]);
+  const std::size_t n = points.size();
+  for(std::size_t i = 0; i < n; ++i)
+    cdt.insert_constraint(handle[i], handle[std::size_t(info[i].next)]);
+
+  // T's: an edge whose constraint passes through other points
+  const K k;
+  bool split = false;
+  for(std::size_t i = 0; i < n; ++i) {
+    const Vertex_handle a = handle[i], b = handle[std::size_t(info[i].next)];
+    if(cdt.is_edge(a, b)) continue;
+    int last = int(i);
+    const int after = info[i].next;
+    for(Vertex_handle u = a; u != b;) {
+      // the next point of the edge: a neighbour of u, strictly between u and b, joined to u by a constraint
+      Vertex_handle w;
+      auto c = cdt.incident_vertices(u), c0 = c;
+      do {
+        if(!cdt.is_infinite(c) && (Vertex_handle(c) == b ||
+                                   (k.orientation_2_object()(u->point(), c->point(), b->point()) == COLLINEAR &&
+                                    k.collinear_are_strictly_ordered_along_line_2_object()(u->point(), c->point(), b->point())))) {
+          w = c;
+          break;
+        }
+      } while(++c != c0);
+      CGAL_assertion(w != Vertex_handle());
+      if(w == Vertex_handle())
+        throw Input_error("an edge of the polygon could not be triangulated (do its rings cross?)");
+      if(w != b) {   // a new point at w's place, on the edge from `last`
+        const int s = int(points.size());
+        std::vector<int>& at = touching[w];
+        if(at.empty()) at.push_back(w->info());
+        Point_info x = info[i];
+        const int first = *std::min_element(at.begin(), at.end());
+        x.ring = info[std::size_t(first)].ring;
+        x.index = info[std::size_t(first)].index;
+        x.next = after;
+        points.push_back(points[std::size_t(w->info())]);
+        info.push_back(x);
+        info[std::size_t(last)].next = s;
+        handle.push_back(w);
+        at.push_back(s);
+        last = s;
+        split = true;
+      }
+      u = w;
+    }
   }
+  if(split)
+    link_touching_corners(data, [&](const typename Kernel::Point_2& p, const typename Kernel::Point_2& q,
+                                    const typename Kernel::Point_2& r) {
+      return k.orientation_2_object()(TK::point(p), TK::point(q), TK::point(r));
+    });
 
   // Nesting level of every face: 0 outside, 1 inside the outer ring, 2 in a hole...
   for(auto f = cdt.all_faces_begin(); f != cdt.all_faces_end(); ++f) f->info() = -1;

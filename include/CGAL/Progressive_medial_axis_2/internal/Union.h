@@ -123,6 +123,10 @@ public:
   std::shared_ptr<Data> run(Medial_axis_union_statistics& stats)
   {
     auto t0 = std::chrono::steady_clock::now();
+    for(int x = 0; x < 2; ++x)
+      if(in_[x]->points.size() != std::size_t(corners(x)))
+        throw Input_error(std::string("not supported yet: a union of polygons where a vertex lies inside an edge (polygon ") +
+                          (x == 0 ? "a" : "b") + ")");
     for(int x = 0; x < 2; ++x) check_complete(x);
     find_shared_edges();
     group_corners();
@@ -369,11 +373,15 @@ private:
       points.emplace_back();
       for(const auto& c : r) points.back().push_back(place(c.first, c.second));
     }
+    bool t = false;
     try {
-      validate_polygon(points);
+      t = !validate_and_find_vertices_on_edges(points).empty();
     } catch(const Input_error& e) {
       throw Input_error(std::string("the union is not a valid polygon: ") + e.what());
     }
+    // (the merges along the shared chains would have to split the edges there)
+    if(t)
+      throw Input_error("not supported yet: a union where a vertex lies inside an edge");
     set_points(data, points, traits_.orientation_2_object());
     // a group's union corner: the union point whose outgoing edge is the
     // group's (an edge leaves one corner only)

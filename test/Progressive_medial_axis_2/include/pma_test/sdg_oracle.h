@@ -79,7 +79,9 @@
 // pinches, inverted islands): the SDG then has one point site there, named after the first
 // vertex at that place in input order, a generator if one of the interior sectors there
 // is reflex; such a point does not vote inside/outside (its faces are classified by their
-// segments), and the checks on the corner bisectors skip it. Checked: at least 3 vertices
+// segments), and the checks on the corner bisectors skip it.  A vertex may lie inside an
+// edge (a T): the oracle splits the edge there (both halves named after the edge), and the
+// place is then one where rings touch at vertices. Checked: at least 3 vertices
 // per ring, no spike, no crossing at a shared vertex; violations throw
 // std::invalid_argument. Coordinates are converted with CGAL::to_double (inputs whose
 // coordinates are not doubles are rounded).
@@ -264,9 +266,14 @@ struct Polygon_data
   {
     return "v" + std::to_string(ring[g]) + "." + std::to_string(index[g]);
   }
+  // Where a vertex lies inside an edge (a T), the edge is split there: the
+  // new vertex comes after the input vertices, edge_of[g] is the input edge
+  // (its first vertex) that the edge from g is part of, and names it.
+  std::vector<int> edge_of;
   std::string edge_id(int g) const
   {
-    return "e" + std::to_string(ring[g]) + "." + std::to_string(index[g]);
+    const int e = edge_of[g];
+    return "e" + std::to_string(ring[e]) + "." + std::to_string(index[e]);
   }
 };
 
@@ -338,6 +345,48 @@ Polygon_data make_polygon_data(const std::vector<std::vector<Point_2> >& rings)
     } else {
       const bool left = (o == CGAL::LEFT_TURN);
       P.turn[g] = (left == static_cast<bool>(P.left_interior[P.ring[g]])) ? 1 : -1;
+    }
+  }
+
+  // T's: a vertex inside an edge.  Candidates by x (fine for test shapes and
+  // real outlines; quadratic only where many vertices share an x).
+  P.edge_of.resize(P.pts.size());
+  std::iota(P.edge_of.begin(), P.edge_of.end(), 0);
+  {
+    const int n = int(P.pts.size());
+    std::vector<int> by_x(n);
+    std::iota(by_x.begin(), by_x.end(), 0);
+    std::sort(by_x.begin(), by_x.end(), [&](int a, int b) { return P.pts[a].x() < P.pts[b].x(); });
+    for(int g = 0; g < n; ++g) {
+      const EPoint a = P.pts[g], b = P.pts[P.next[g]];
+      const double lo = (std::min)(a.x(), b.x()), hi = (std::max)(a.x(), b.x());
+      auto it = std::lower_bound(by_x.begin(), by_x.end(), lo, [&](int v, double x) { return P.pts[v].x() < x; });
+      std::vector<int> inside;
+      for(; it != by_x.end() && P.pts[*it].x() <= hi; ++it)
+        if(CGAL::orientation(a, b, P.pts[*it]) == CGAL::COLLINEAR &&
+           CGAL::collinear_are_strictly_ordered_along_line(a, P.pts[*it], b))
+          inside.push_back(*it);
+      if(inside.empty()) continue;
+      std::sort(inside.begin(), inside.end(), [&](int u, int v) {
+        return CGAL::collinear_are_strictly_ordered_along_line(a, P.pts[u], P.pts[v]);
+      });
+      inside.erase(std::unique(inside.begin(), inside.end(), [&](int u, int v) { return P.pts[u] == P.pts[v]; }),
+                   inside.end());
+      int last = g;
+      const int after = P.next[g];
+      for(int v : inside) {
+        const int s = int(P.pts.size());
+        P.pts.push_back(P.pts[v]);
+        P.ring.push_back(P.ring[g]);
+        P.index.push_back(-1);
+        P.edge_of.push_back(g);
+        P.turn.push_back(0);
+        P.next.push_back(after);
+        P.prev.push_back(last);
+        P.next[last] = s;
+        P.prev[after] = s;
+        last = s;
+      }
     }
   }
 

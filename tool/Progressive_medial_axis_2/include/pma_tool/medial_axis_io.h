@@ -49,8 +49,14 @@ public:
   {
     if(mode == SHAPE) {
       rings_ = ma.shape_rings();
+      // A generator is named by the position of its source.  Where a vertex
+      // lies inside an edge (a T), the second half of the edge starts at that
+      // vertex's place, so one input vertex occurs twice (never as a point
+      // generator: no sector there is reflex); the occurrence followed by
+      // the edge's target names the edge.
       for(std::size_t r = 0; r < rings_.size(); ++r)
-        for(std::size_t i = 0; i < rings_[r].size(); ++i) position_[rings_[r][i]] = std::make_pair(int(r), int(i));
+        for(std::size_t i = 0; i < rings_[r].size(); ++i)
+          position_[rings_[r][i]].push_back(Occurrence{int(r), int(i), rings_[r][(i + 1) % rings_[r].size()]});
     }
   }
 
@@ -58,8 +64,11 @@ public:
   {
     if(mode_ == INPUT)
       return g.id();
-    const auto& pos = position_.at(g.source_vertex());
-    return (g.is_point() ? "v" : "e") + std::to_string(pos.first) + "." + std::to_string(pos.second);
+    const std::vector<Occurrence>& at = position_.at(g.source_vertex());
+    const Occurrence* pos = &at.front();
+    for(const Occurrence& o : at)
+      if(!g.is_point() && o.next == g.target_vertex()) pos = &o;
+    return (g.is_point() ? "v" : "e") + std::to_string(pos->ring) + "." + std::to_string(pos->index);
   }
 
   /// The shape's rings (SHAPE mode).
@@ -68,7 +77,8 @@ public:
 private:
   Mode mode_;
   std::vector<std::vector<Input_vertex> > rings_;
-  std::map<Input_vertex, std::pair<int, int> > position_;
+  struct Occurrence { int ring, index; Input_vertex next; };
+  std::map<Input_vertex, std::vector<Occurrence> > position_;
 };
 
 /// A medial curve of an output, or the part of it that a pruning keeps:
