@@ -13,6 +13,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -512,6 +513,18 @@ void repair(const std::string& data)
     pma_test::Curve_diff d = pma_test::compare_curves(pma_test::parse_pairs(a), pma_test::parse_pairs(b), 10.0);
     CHECK(d.ok(), f << " --repair: the pairs differ from sdg_pairs on the repaired polygon\n" << d.report());
   }
+  // holes outside the outer ring or inside another hole, the only problem: dropped,
+  // the other rings kept as given; the outer ring inside a hole leaves nothing
+  for(const auto& c : std::vector<std::array<std::string, 2> >{
+        {"hole_outside.wkt", "POLYGON ((0 0, 4 0, 4 4, 0 4, 0 0))"},
+        {"hole_in_hole.wkt", "POLYGON ((0 0, 10 0, 10 10, 0 10, 0 0), (1 1, 1 9, 9 9, 9 1, 1 1))"}}) {
+    Result r = run(tool + " --repair --repaired-out " + tmp + "/dropped.wkt " + data + "/invalid/" + c[0]);
+    CHECK(r.status == 0 && slurp(tmp + "/dropped.wkt") == c[1] + "\n",
+          c[0] << " --repair: " << r.err << slurp(tmp + "/dropped.wkt"));
+  }
+  Result empty = run(tool + " --repair " + data + "/invalid/outer_inside_hole.wkt");
+  CHECK(empty.status == 2 && empty.err.find("no polygon of positive area is left") != std::string::npos,
+        "outer_inside_hole.wkt --repair: " << empty.err);
   // a valid polygon is not touched
   Result v = run(tool + " --repair --stats --pairs " + data + "/syn_comb50.wkt");
   Result w = run(tool + " --pairs " + data + "/syn_comb50.wkt");
@@ -547,7 +560,7 @@ int main(int argc, char** argv)
                        "syn_three_holes", "syn_pinch", "syn_island", "syn_island_min", "syn_reflex_touch",
                        "syn_hole_at_reflex", "syn_pinch_small", "syn_touch_at_smallest", "c1m_AUS_33982", "c1m_NGA_47424", "c1m_USA_24161", "c1m_NOR_55654",
                        // a vertex inside an edge (T's)
-                       "syn_t_self", "syn_t_hole_edge", "syn_t_two_holes_one_point", "syn_t_hole_hole", "syn_t_notch"})
+                       "syn_t_self", "syn_t_hole_edge", "syn_t_two_holes_one_point", "syn_t_hole_hole", "syn_t_notch", "l10m_RUS_30511"})
     pairs_against_oracle(data + "/touching/" + f + ".wkt", {-1, 1, 2, 3, 5, 50, 400});
   pairs_against_oracle(data + "/touching/c1m_PNG_21.wkt", {-1, 3000});
   outputs(data);

@@ -692,7 +692,9 @@ int run(const Options& o)
     const Job& job = jobs[k];
     pma_tool::Axis_layer<Medial_axis> layer;
     layer.ma = job.ma;
-    layer.parts = o.prune ? pma_tool::axis_parts(*job.pruned) : pma_tool::axis_parts(*job.ma);
+    // the curves, for the outputs that list them (a plain run does not pay for them)
+    if(o.pairs || !o.svg.empty() || !o.geojson.empty() || !o.wkt_out.empty())
+      layer.parts = o.prune ? pma_tool::axis_parts(*job.pruned) : pma_tool::axis_parts(*job.ma);
     if(o.prune) layer.keep = [p = job.pruned.get()](const Vertex& v) { return p->is_kept(v); };
     layer.names = pma_tool::prefixed_names(Names(*job.ma, shape_mode ? Names::SHAPE : Names::INPUT), job.prefix);
     layer.properties = job.input->properties;

@@ -144,7 +144,8 @@ public:
       m_allow_touching(allow_touching)
   {}
 
-  void run()
+  /// Runs the checks; without `nesting`, step 8 is left out (see `misplaced_holes()`).
+  void run(bool nesting = true)
   {
     if(m_rings.empty())
       throw Input_error("empty polygon");
@@ -162,7 +163,20 @@ public:
       check_touching_vertices();
     sweep();
     check_vertices_on_edges();
-    check_nesting();
+    if(nesting)
+      check_nesting();
+  }
+
+  /// After `run(false)`: the holes that do not lie directly inside the outer
+  /// ring (outside it, or inside another hole), and whether the outer ring
+  /// lies inside one of them.
+  std::vector<std::size_t> misplaced_holes(bool* outer_inside_a_hole = nullptr) const
+  {
+    std::vector<std::size_t> out;
+    for(std::size_t r = 1; r < m_rings.size(); ++r)
+      if(m_parent[r] != 0) out.push_back(r);
+    if(outer_inside_a_hole) *outer_inside_a_hole = m_parent[0] >= 0;
+    return out;
   }
 
   /// After `run()`: the places where a vertex lies inside an edge (with

@@ -104,6 +104,7 @@ template <class Medial_axis>
 std::vector<Axis_part<Medial_axis> > axis_parts(const Medial_axis& ma)
 {
   std::vector<Axis_part<Medial_axis> > out;
+  out.reserve(ma.number_of_edges());   // (a vector grown by doubling holds up to 3 times the curves)
   for(const auto& e : ma.edges()) {
     Axis_part<Medial_axis> p;
     p.h = e;
@@ -118,6 +119,7 @@ template <class K>
 std::vector<Axis_part<CGAL::Medial_axis_2<K> > > axis_parts(const CGAL::Pruned_medial_axis_2<K>& pruned)
 {
   std::vector<Axis_part<CGAL::Medial_axis_2<K> > > out;
+  out.reserve(pruned.curves().size());
   for(const auto& c : pruned.curves()) {
     Axis_part<CGAL::Medial_axis_2<K> > p;
     p.h = c.halfedge;

@@ -11,6 +11,7 @@
 #define PMA_TOOL_REPAIR_H
 
 #include <CGAL/Progressive_medial_axis_2/Input_error.h>
+#include <CGAL/Progressive_medial_axis_2/validate_polygon.h>
 
 #include <CGAL/number_utils.h>
 
@@ -62,6 +63,42 @@ private:
 } // namespace internal
 #endif
 
+namespace internal {
+
+// The structure method's result where the only problem is holes outside the
+// outer ring or inside another hole (their area is outside the shell or
+// already removed: the result is the polygon without them), without GEOS:
+// MakeValid costs seconds on polygons with tens of thousands of holes, and
+// renumbers every ring.  False if there is another problem, or if the outer
+// ring lies inside a hole (the result is then empty, or other polygons).
+template <class Point_2>
+bool drop_misplaced_holes(const CGAL::Progressive_medial_axes::Rings<Point_2>& rings,
+                          CGAL::Progressive_medial_axes::Rings<Point_2>& out)
+{
+  typedef typename CGAL::Kernel_traits<Point_2>::Kernel K;
+  std::vector<std::size_t> misplaced;
+  bool outer_inside = false;
+  try {
+    CGAL::Progressive_medial_axes::internal::Polygon_rings_validator<K> validator(rings, true);
+    validator.run(false);
+    misplaced = validator.misplaced_holes(&outer_inside);
+  } catch(const CGAL::Progressive_medial_axes::Input_error&) {
+    return false;
+  }
+  if(misplaced.empty() || outer_inside) return false;
+  out.clear();
+  for(std::size_t r = 0, m = 0; r < rings.size(); ++r) {
+    if(m < misplaced.size() && misplaced[m] == r) {
+      ++m;
+      continue;
+    }
+    out.push_back(rings[r]);
+  }
+  return true;
+}
+
+} // namespace internal
+
 /*!
 Turns the polygon with holes `rings` (any orientation, possibly invalid:
 crossings, overlapping edges, spikes, zero-length edges, holes outside the
@@ -70,7 +107,10 @@ shell) into valid polygons covering the same area, with GEOS's
 the area is that of the outer ring minus the holes, collapsed parts (spikes,
 rings of no area) are dropped.  Polygons of the result are returned in the
 order GEOS gives them, each as rings (outer ring first, closing point
-dropped).  Throws `Input_error` if GEOS fails or the build has no GEOS.
+dropped).  Where the only problem is holes outside the outer ring or inside
+another hole, the result is the polygon without them, its rings as given
+(GEOS is not called).  Throws `Input_error` if GEOS fails or the build has
+no GEOS.
 */
 template <class Point_2>
 std::vector<CGAL::Progressive_medial_axes::Rings<Point_2> >
@@ -81,6 +121,10 @@ repair_polygon(const CGAL::Progressive_medial_axes::Rings<Point_2>& rings)
   (void)rings;
   throw Input_error("--repair needs GEOS: this build of the tool has none (install libgeos-dev and rebuild)");
 #else
+  {
+    CGAL::Progressive_medial_axes::Rings<Point_2> without;
+    if(internal::drop_misplaced_holes(rings, without)) return {without};
+  }
   internal::Geos_context context;
   GEOSContextHandle_t h = context.handle();
   auto fail = [&](const char* what) -> Input_error {
