@@ -144,7 +144,7 @@ public:
       m_allow_touching(allow_touching)
   {}
 
-  /// Runs the checks; without `nesting`, step 8 is left out (see `misplaced_holes()`).
+  /// Runs the checks; without `nesting`, step 8 is left out (see `parents()`).
   void run(bool nesting = true)
   {
     if(m_rings.empty())
@@ -167,17 +167,10 @@ public:
       check_nesting();
   }
 
-  /// After `run(false)`: the holes that do not lie directly inside the outer
-  /// ring (outside it, or inside another hole), and whether the outer ring
-  /// lies inside one of them.
-  std::vector<std::size_t> misplaced_holes(bool* outer_inside_a_hole = nullptr) const
-  {
-    std::vector<std::size_t> out;
-    for(std::size_t r = 1; r < m_rings.size(); ++r)
-      if(m_parent[r] != 0) out.push_back(r);
-    if(outer_inside_a_hole) *outer_inside_a_hole = m_parent[0] >= 0;
-    return out;
-  }
+  /// After `run(false)`: the ring directly enclosing each ring, or -1 (the
+  /// outer ring's parent is -1 unless it lies inside a hole; a valid polygon
+  /// has 0 as the parent of every hole).
+  const std::vector<long>& parents() const { return m_parent; }
 
   /// After `run()`: the places where a vertex lies inside an edge (with
   /// `allow_touching`), as (the first vertex there in input order, the edge),

@@ -13,8 +13,11 @@
 #include <CGAL/Progressive_medial_axis_2/Input_error.h>
 #include <CGAL/Progressive_medial_axis_2/validate_polygon.h>
 
+#include <CGAL/Polygon_2_algorithms.h>
 #include <CGAL/number_utils.h>
 
+#include <algorithm>
+#include <cctype>
 #include <string>
 #include <vector>
 
@@ -65,66 +68,60 @@ private:
 
 namespace internal {
 
-// The structure method's result where the only problem is holes outside the
-// outer ring or inside another hole (their area is outside the shell or
-// already removed: the result is the polygon without them), without GEOS:
-// MakeValid costs seconds on polygons with tens of thousands of holes, and
-// renumbers every ring.  False if there is another problem, or if the outer
-// ring lies inside a hole (the result is then empty, or other polygons).
+// Removes the zero-area parts that the structure method drops, in place:
+// repeated consecutive vertices (zero-length edges) and spikes (a vertex whose
+// two edges are collinear and fold back), until none is left; a hole that
+// collapses is dropped.  Local and exact (the area does not change), where
+// MakeValid takes minutes on a polygon of a million vertices with one spike.
+// False if the outer ring collapses.
 template <class Point_2>
-bool drop_misplaced_holes(const CGAL::Progressive_medial_axes::Rings<Point_2>& rings,
-                          CGAL::Progressive_medial_axes::Rings<Point_2>& out)
+bool remove_folds(CGAL::Progressive_medial_axes::Rings<Point_2>& rings)
 {
   typedef typename CGAL::Kernel_traits<Point_2>::Kernel K;
-  std::vector<std::size_t> misplaced;
-  bool outer_inside = false;
-  try {
-    CGAL::Progressive_medial_axes::internal::Polygon_rings_validator<K> validator(rings, true);
-    validator.run(false);
-    misplaced = validator.misplaced_holes(&outer_inside);
-  } catch(const CGAL::Progressive_medial_axes::Input_error&) {
-    return false;
-  }
-  if(misplaced.empty() || outer_inside) return false;
-  out.clear();
-  for(std::size_t r = 0, m = 0; r < rings.size(); ++r) {
-    if(m < misplaced.size() && misplaced[m] == r) {
-      ++m;
-      continue;
+  const K k;
+  auto fold = [&](const Point_2& a, const Point_2& g, const Point_2& c) {
+    return a == g || g == c ||
+           (k.orientation_2_object()(a, g, c) == CGAL::COLLINEAR &&
+            k.compare_xy_2_object()(a, g) == k.compare_xy_2_object()(c, g));
+  };
+  for(std::size_t r = 0; r < rings.size(); ++r) {
+    std::vector<Point_2> out;   // a stack: every triple below its top is fold-free
+    auto settle = [&]() {
+      while(out.size() >= 2 && out[out.size() - 1] == out[out.size() - 2]) out.pop_back();
+      while(out.size() >= 3 && fold(out[out.size() - 3], out[out.size() - 2], out[out.size() - 1])) {
+        out.erase(out.end() - 2);
+        while(out.size() >= 2 && out[out.size() - 1] == out[out.size() - 2]) out.pop_back();
+      }
+    };
+    for(const Point_2& p : rings[r]) {
+      out.push_back(p);
+      settle();
     }
-    out.push_back(rings[r]);
+    // around the closing point: rotate the start away and settle again
+    for(std::size_t turn = 0; out.size() >= 3 && turn < out.size(); ++turn) {
+      const std::size_t m = out.size();
+      if(!fold(out[m - 1], out[0], out[1]) && !fold(out[m - 2], out[m - 1], out[0])) break;
+      std::rotate(out.begin(), out.begin() + 1, out.end());
+      settle();
+    }
+    rings[r].swap(out);
   }
+  auto collapsed = [](const std::vector<Point_2>& ring) { return ring.size() < 3; };
+  if(collapsed(rings[0])) return false;
+  rings.erase(std::remove_if(rings.begin() + 1, rings.end(), collapsed), rings.end());
   return true;
 }
 
-} // namespace internal
-
-/*!
-Turns the polygon with holes `rings` (any orientation, possibly invalid:
-crossings, overlapping edges, spikes, zero-length edges, holes outside the
-shell) into valid polygons covering the same area, with GEOS's
-`GEOSMakeValidWithParams` and its `structure` method (GEOS 3.10 and later):
-the area is that of the outer ring minus the holes, collapsed parts (spikes,
-rings of no area) are dropped.  Polygons of the result are returned in the
-order GEOS gives them, each as rings (outer ring first, closing point
-dropped).  Where the only problem is holes outside the outer ring or inside
-another hole, the result is the polygon without them, its rings as given
-(GEOS is not called).  Throws `Input_error` if GEOS fails or the build has
-no GEOS.
-*/
+#ifdef PMA_TOOL_WITH_GEOS
+// GEOS's MakeValid (structure method) of each polygon of `input`, and the
+// union of the results if `union_all` (else `input` holds one polygon),
+// minus the union of the polygons of `subtract`, each made valid.
 template <class Point_2>
 std::vector<CGAL::Progressive_medial_axes::Rings<Point_2> >
-repair_polygon(const CGAL::Progressive_medial_axes::Rings<Point_2>& rings)
+geos_make_valid(const std::vector<CGAL::Progressive_medial_axes::Rings<Point_2> >& input, bool union_all,
+                const std::vector<CGAL::Progressive_medial_axes::Rings<Point_2> >& subtract = {})
 {
   typedef CGAL::Progressive_medial_axes::Input_error Input_error;
-#ifndef PMA_TOOL_WITH_GEOS
-  (void)rings;
-  throw Input_error("--repair needs GEOS: this build of the tool has none (install libgeos-dev and rebuild)");
-#else
-  {
-    CGAL::Progressive_medial_axes::Rings<Point_2> without;
-    if(internal::drop_misplaced_holes(rings, without)) return {without};
-  }
   internal::Geos_context context;
   GEOSContextHandle_t h = context.handle();
   auto fail = [&](const char* what) -> Input_error {
@@ -142,19 +139,42 @@ repair_polygon(const CGAL::Progressive_medial_axes::Rings<Point_2>& rings)
     return g;
   };
   auto destroy = [h](GEOSGeometry* g) { GEOSGeom_destroy_r(h, g); };
-  std::vector<GEOSGeometry*> holes;
-  GEOSGeometry* shell = ring(rings[0]);
-  for(std::size_t r = 1; r < rings.size(); ++r) holes.push_back(ring(rings[r]));
-  std::unique_ptr<GEOSGeometry, decltype(destroy)> polygon(
-    GEOSGeom_createPolygon_r(h, shell, holes.data(), static_cast<unsigned>(holes.size())), destroy);
-  if(!polygon) throw fail("GEOSGeom_createPolygon");
-
-  GEOSMakeValidParams* p = GEOSMakeValidParams_create_r(h);
-  GEOSMakeValidParams_setMethod_r(h, p, GEOS_MAKE_VALID_STRUCTURE);
-  GEOSMakeValidParams_setKeepCollapsed_r(h, p, 0);
-  std::unique_ptr<GEOSGeometry, decltype(destroy)> valid(GEOSMakeValidWithParams_r(h, polygon.get(), p), destroy);
-  GEOSMakeValidParams_destroy_r(h, p);
-  if(!valid) throw fail("GEOSMakeValid");
+  typedef std::unique_ptr<GEOSGeometry, decltype(destroy)> Owned;
+  // the polygons made valid, and their union if `unite`
+  auto make_valid = [&](const std::vector<CGAL::Progressive_medial_axes::Rings<Point_2> >& polygons, bool unite) {
+    GEOSMakeValidParams* p = GEOSMakeValidParams_create_r(h);
+    GEOSMakeValidParams_setMethod_r(h, p, GEOS_MAKE_VALID_STRUCTURE);
+    GEOSMakeValidParams_setKeepCollapsed_r(h, p, 0);
+    std::vector<Owned> made;
+    for(const auto& rings : polygons) {
+      std::vector<GEOSGeometry*> holes;
+      GEOSGeometry* shell = ring(rings[0]);
+      for(std::size_t r = 1; r < rings.size(); ++r) holes.push_back(ring(rings[r]));
+      Owned polygon(GEOSGeom_createPolygon_r(h, shell, holes.data(), static_cast<unsigned>(holes.size())), destroy);
+      if(!polygon) throw fail("GEOSGeom_createPolygon");
+      made.emplace_back(GEOSMakeValidWithParams_r(h, polygon.get(), p), destroy);
+      if(!made.back()) {
+        GEOSMakeValidParams_destroy_r(h, p);
+        throw fail("GEOSMakeValid");
+      }
+    }
+    GEOSMakeValidParams_destroy_r(h, p);
+    if(!unite) return std::move(made[0]);
+    std::vector<GEOSGeometry*> parts;
+    for(Owned& g : made) parts.push_back(g.release());   // the collection takes them
+    Owned all(GEOSGeom_createCollection_r(h, GEOS_GEOMETRYCOLLECTION, parts.data(), static_cast<unsigned>(parts.size())),
+              destroy);
+    if(!all) throw fail("GEOSGeom_createCollection");
+    Owned u(GEOSUnaryUnion_r(h, all.get()), destroy);
+    if(!u) throw fail("GEOSUnaryUnion");
+    return u;
+  };
+  Owned valid = make_valid(input, union_all);
+  if(!subtract.empty()) {
+    Owned minus = make_valid(subtract, true);
+    valid.reset(GEOSDifference_r(h, valid.get(), minus.get()));
+    if(!valid) throw fail("GEOSDifference");
+  }
 
   std::vector<CGAL::Progressive_medial_axes::Rings<Point_2> > out;
   auto read_ring = [&](const GEOSGeometry* g, std::vector<Point_2>& r) {
@@ -191,6 +211,148 @@ repair_polygon(const CGAL::Progressive_medial_axes::Rings<Point_2>& rings)
     }
   }
   return out;
+}
+
+#endif
+
+// Whether ring `hole` (disjoint from `outer`'s boundary but maybe at
+// vertices) lies inside ring `outer`: at its first vertex off that boundary.
+template <class Point_2>
+bool inside(const std::vector<Point_2>& hole, const std::vector<Point_2>& outer)
+{
+  typedef typename CGAL::Kernel_traits<Point_2>::Kernel K;
+  for(const Point_2& p : hole) {
+    const CGAL::Bounded_side b = CGAL::bounded_side_2(outer.begin(), outer.end(), p, K());
+    if(b != CGAL::ON_BOUNDARY) return b == CGAL::ON_BOUNDED_SIDE;
+  }
+  return false;
+}
+
+// The rings an error message names ("ring 3 edge 5 ... ring 7 edge 0").
+inline std::vector<std::size_t> rings_named(const std::string& message)
+{
+  std::vector<std::size_t> out;
+  for(std::size_t at = message.find("ring "); at != std::string::npos; at = message.find("ring ", at + 5)) {
+    std::size_t k = at + 5, r = 0;
+    if(k >= message.size() || !std::isdigit(static_cast<unsigned char>(message[k]))) continue;
+    for(; k < message.size() && std::isdigit(static_cast<unsigned char>(message[k])); ++k) r = 10 * r + std::size_t(message[k] - '0');
+    if(std::find(out.begin(), out.end(), r) == out.end()) out.push_back(r);
+  }
+  return out;
+}
+
+} // namespace internal
+
+/*!
+Turns the polygon with holes `rings` (any orientation, possibly invalid:
+crossings, overlapping edges, spikes, zero-length edges, holes outside the
+shell) into valid polygons covering the same area, with GEOS's
+`GEOSMakeValidWithParams` and its `structure` method (GEOS 3.10 and later):
+the area is that of the outer ring minus the holes, collapsed parts (spikes,
+rings of no area) are dropped.  Polygons of the result are returned in the
+order GEOS gives them, each as rings (outer ring first, closing point
+dropped).  The result is that of GEOS 3.11's structure method (a hole
+disjoint from the outer ring becomes a polygon, a hole inside another one
+adds nothing), computed locally where it can be: zero-length edges and
+spikes (zero-area folds) are removed, misplaced holes are dropped or become
+polygons, holes that cross or overlap each other (or themselves) are
+replaced by their union made valid, and an outer ring that crosses itself or
+a hole is made valid minus those holes, by GEOS on those rings only; the
+rings left untouched keep their vertices as given.  GEOS repairs the whole
+polygon only where these do not suffice.  Throws `Input_error` if GEOS fails or the build has
+no GEOS.
+*/
+template <class Point_2>
+std::vector<CGAL::Progressive_medial_axes::Rings<Point_2> >
+repair_polygon(const CGAL::Progressive_medial_axes::Rings<Point_2>& rings)
+{
+  typedef CGAL::Progressive_medial_axes::Input_error Input_error;
+#ifndef PMA_TOOL_WITH_GEOS
+  (void)rings;
+  throw Input_error("--repair needs GEOS: this build of the tool has none (install libgeos-dev and rebuild)");
+#else
+  typedef CGAL::Progressive_medial_axes::Rings<Point_2> Rings;
+  typedef typename CGAL::Kernel_traits<Point_2>::Kernel K;
+  // Local repairs first, each exact or done by GEOS on a few rings only,
+  // then the check again; GEOS on the whole polygon where they do not
+  // suffice.  The area stays that of the structure method: the outer ring
+  // made valid, minus the union of the holes made valid.
+  Rings work = rings;
+  std::vector<Rings> extra;   // pieces of the outer ring split off by its repair (with their holes)
+  if(!internal::remove_folds(work)) return internal::geos_make_valid(std::vector<Rings>{rings}, false);
+  for(int round = 0; round < 64; ++round) {
+    std::string error;
+    std::vector<long> parent;
+    try {
+      CGAL::Progressive_medial_axes::internal::Polygon_rings_validator<K> validator(work, true);
+      validator.run(false);
+      parent = validator.parents();
+    } catch(const Input_error& e) {
+      error = e.what();
+    }
+    if(error.empty()) {
+      // As GEOS's structure method does: a hole inside another hole adds
+      // nothing (the holes are united), a hole disjoint from the outer ring
+      // becomes a polygon of its own (holes inside it are united with it);
+      // one inside a piece of the outer ring split off is a hole of that
+      // piece.  The outer ring inside a hole: left to GEOS.
+      if(parent[0] >= 0) break;
+      std::vector<Rings> out(1), outside;
+      for(std::size_t r = 0; r < work.size(); ++r) {
+        if(r == 0 || parent[r] == 0) {
+          out[0].push_back(std::move(work[r]));
+        } else if(parent[r] < 0) {
+          Rings* piece = nullptr;
+          for(Rings& x : extra)
+            if(!piece && internal::inside(work[r], x[0])) piece = &x;
+          if(piece) piece->push_back(std::move(work[r]));
+          else outside.push_back(Rings{std::move(work[r])});
+        }
+      }
+      for(Rings& x : outside) extra.push_back(std::move(x));
+      bool valid = true;
+      for(Rings& x : extra) {
+        try {
+          CGAL::Progressive_medial_axes::validate_polygon(x);
+        } catch(const Input_error&) {
+          valid = false;
+        }
+        out.push_back(std::move(x));
+      }
+      if(!valid) return internal::geos_make_valid(std::vector<Rings>{rings}, false);
+      return out;
+    }
+    const std::vector<std::size_t> named = internal::rings_named(error);
+    if(named.empty()) break;
+    std::vector<Rings> holes;
+    for(std::size_t r : named)
+      if(r != 0) holes.push_back(Rings{work[r]});
+    Rings next;
+    if(std::find(named.begin(), named.end(), std::size_t(0)) != named.end()) {
+      // the outer ring: made valid, minus the holes it meets; the largest
+      // piece is the outer ring from now on, the others are split off
+      std::vector<Rings> pieces = internal::geos_make_valid(std::vector<Rings>{Rings{work[0]}}, false, holes);
+      if(pieces.empty()) break;
+      std::size_t main = 0;
+      for(std::size_t q = 1; q < pieces.size(); ++q)
+        if(pieces[q][0].size() > pieces[main][0].size()) main = q;
+      next = std::move(pieces[main]);
+      for(std::size_t q = 0; q < pieces.size(); ++q)
+        if(q != main) extra.push_back(std::move(pieces[q]));
+    } else {
+      // holes that cross or overlap each other (or themselves): their union,
+      // made valid, replaces them, if it has no islands
+      const std::vector<Rings> merged = internal::geos_make_valid(holes, true);
+      if(std::any_of(merged.begin(), merged.end(), [](const Rings& m) { return m.size() > 1; })) break;
+      next.push_back(std::move(work[0]));
+      for(const Rings& m : merged) next.push_back(m[0]);
+    }
+    for(std::size_t r = 1; r < work.size(); ++r)
+      if(std::find(named.begin(), named.end(), r) == named.end()) next.push_back(std::move(work[r]));
+    work.swap(next);
+    if(!internal::remove_folds(work)) break;
+  }
+  return internal::geos_make_valid(std::vector<Rings>{rings}, false);
 #endif
 }
 
