@@ -95,9 +95,10 @@ const char* usage_text =
   "  --tolerance D      distance within which WKT and GeoJSON polylines follow the\n"
   "                     curves (default: 1e-6 of the shape's diagonal)\n"
   "  --repair           turn invalid polygons (crossings, overlapping edges, spikes,\n"
-  "                     zero-length edges, holes outside) into valid ones with GEOS\n"
-  "                     (MakeValid, structure method); ids then refer to the polygons\n"
-  "                     after repair, as --repaired-out writes them\n"
+  "                     zero-length edges, holes outside) into valid ones as GEOS\n"
+  "                     MakeValid (structure method) does, locally where it can;\n"
+  "                     ids then refer to the polygons after repair, as\n"
+  "                     --repaired-out writes them\n"
   "  --repaired-out FILE  write the polygons after --repair as WKT\n"
   "  --stats            print the input size, step count, times and the largest n_v\n"
   "  --help             print this text\n";
