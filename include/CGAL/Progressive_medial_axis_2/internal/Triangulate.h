@@ -111,7 +111,7 @@ std::vector<Triangle> triangulate_rings(Data& data)
     int last = int(i);
     const int after = info[i].next;
     for(Vertex_handle u = a; u != b;) {
-      // the next point of the edge: a neighbour of u, strictly between u and b, joined to u by a constraint
+      // the next point of the edge: the neighbour of u strictly between u and b on the segment
       Vertex_handle w;
       auto c = cdt.incident_vertices(u), c0 = c;
       do {
@@ -122,7 +122,6 @@ std::vector<Triangle> triangulate_rings(Data& data)
           break;
         }
       } while(++c != c0);
-      CGAL_assertion(w != Vertex_handle());
       if(w == Vertex_handle())
         throw Input_error("an edge of the polygon could not be triangulated (do its rings cross?)");
       if(w != b) {   // a new point at w's place, on the edge from `last`
