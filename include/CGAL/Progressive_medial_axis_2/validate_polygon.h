@@ -59,7 +59,7 @@ namespace internal {
       `allow_touching`, a vertex may lie inside an edge (an OGC hole touching the outer
       ring inside one of its edges, a "T"): the sweep records it, and after the sweep
       the sectors at that place, the edge counting as two rays, must alternate as in
-      step 5 (`vertices_on_edges()` gives the places found);
+      step 5 (`has_vertices_on_edges()` says whether there is one);
    8. the rings nest properly: every hole lies directly inside the outer ring.
 
   Steps 3 and 5 sort all the vertices lexicographically (`Compare_xy_2`, ties broken by
@@ -176,15 +176,8 @@ public:
   /// has 0 as the parent of every hole).
   const std::vector<long>& parents() const { return m_parent; }
 
-  /// After `run()`: the places where a vertex lies inside an edge (with
-  /// `allow_touching`), as (the first vertex there in input order, the edge),
-  /// sorted.
-  std::vector<std::pair<std::size_t, std::size_t> > vertices_on_edges() const
-  {
-    std::vector<std::pair<std::size_t, std::size_t> > out(m_on_edges.begin(), m_on_edges.end());
-    std::sort(out.begin(), out.end());
-    return out;
-  }
+  /// After `run()`: whether a vertex lies inside an edge (with `allow_touching`).
+  bool has_vertices_on_edges() const { return !m_on_edges.empty(); }
 
 private:
   // ---------------------------------------------------------------- helpers
@@ -499,7 +492,7 @@ private:
 
   // The places where vertices lie inside edges (the sweep's T's): the sectors
   // there, each such edge counting as two rays, must alternate.
-  void check_vertices_on_edges()
+  void check_vertices_on_edges() const
   {
     if(m_on_edges.empty())
       return;
@@ -513,7 +506,6 @@ private:
     }
     std::sort(found.begin(), found.end());
     found.erase(std::unique(found.begin(), found.end()), found.end());
-    m_on_edges.clear();
     for(std::size_t i = 0; i < found.size();) {
       const std::size_t begin = found[i].first;
       std::vector<Id> through;
@@ -522,7 +514,6 @@ private:
       while(end < m_order.size() && equal(m_order[begin], m_order[end]))
         ++end;
       check_touching_point(begin, end, through);
-      for(Id t : through) m_on_edges.emplace_back(m_order[begin], t);
     }
   }
 
@@ -866,17 +857,16 @@ void validate_polygon_rings(const Rings<typename Kernel::Point_2>& rings)
 
 namespace internal {
 
-// validate_polygon(), returning the places where a vertex lies inside an edge
-// (T's), as (global index of the first vertex there, global index of the edge).
+// validate_polygon(), returning whether a vertex lies inside an edge (a T).
 template <class Point_2>
-std::vector<std::pair<std::size_t, std::size_t> > validate_and_find_vertices_on_edges(const Rings<Point_2>& rings)
+bool validate_and_find_vertices_on_edges(const Rings<Point_2>& rings)
 {
   typedef typename Kernel_traits<Point_2>::Kernel K;
   typedef Exact_predicates_kernel_for<K> EK;
   if constexpr(std::is_same<typename EK::type, K>::value) {
     Polygon_rings_validator<K> validator(rings, true);
     validator.run();
-    return validator.vertices_on_edges();
+    return validator.has_vertices_on_edges();
   } else {
     Rings<typename EK::type::Point_2> converted;
     for(const auto& r : rings) {
@@ -885,7 +875,7 @@ std::vector<std::pair<std::size_t, std::size_t> > validate_and_find_vertices_on_
     }
     Polygon_rings_validator<typename EK::type> validator(converted, true);
     validator.run();
-    return validator.vertices_on_edges();
+    return validator.has_vertices_on_edges();
   }
 }
 

@@ -375,7 +375,7 @@ private:
     }
     bool t = false;
     try {
-      t = !validate_and_find_vertices_on_edges(points).empty();
+      t = validate_and_find_vertices_on_edges(points);
     } catch(const Input_error& e) {
       throw Input_error(std::string("the union is not a valid polygon: ") + e.what());
     }
