@@ -9,6 +9,7 @@
 #include <pma_test/check.h>
 
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <cstdlib>
 #include <random>
@@ -164,6 +165,30 @@ void small_rational_tests()
       ++overflows;
     }
     ++compared;
+  }
+  // integers and fractions around the 64-bit boundary, where the arithmetic
+  // switches between 64-bit and 128-bit operations
+  std::uniform_int_distribution<int> bits(1, 70);
+  std::uniform_int_distribution<std::int64_t> word(INT64_MIN, INT64_MAX);
+  for(int i = 0; i < 20000; ++i) {
+    auto value = [&]() {
+      const int b = bits(rng);
+      const double m = std::ldexp(double(word(rng) >> 11), -52);   // |m| < 1, 52 bits
+      return std::ldexp(m, b) + (i % 3 == 0 ? 0.0 : std::ldexp(1.0, -bits(rng) % 40));
+    };
+    try {
+      const Small_rational x(value()), y(value());
+      const Gmpq gx = x.to_gmpq(), gy = y.to_gmpq();
+      Gmpq quotient;
+      if(CGAL::sign(gy) != CGAL::ZERO) quotient = gx / gy;
+      if(Gmpq(CGAL::to_double(gx)) != gx || (x * y).to_gmpq() != gx * gy || (x + y).to_gmpq() != gx + gy ||
+         (x - y).to_gmpq() != gx - gy || (CGAL::sign(gy) != CGAL::ZERO && (x / y).to_gmpq() != quotient)) {
+        ++pma_test::failures();
+        std::printf("FAIL: small rational near 2^64 differs from Gmpq (%d)\n", i);
+      }
+    } catch(Small_rational_overflow&) {
+      ++overflows;
+    }
   }
   // one-root numbers over small rationals against Gmpq
   for(int i = 0; i < 5000; ++i) {

@@ -153,10 +153,12 @@ public:
     return r;
   }
 
-  One_root_number operator-() const { return One_root_number(-a_, -b_, d_); }
+  One_root_number operator-() const { return is_rational() ? One_root_number(-a_) : One_root_number(-a_, -b_, d_); }
 
   friend One_root_number operator+(const One_root_number& x, const One_root_number& y)
   {
+    if(x.is_rational() && y.is_rational())
+      return One_root_number(x.a_ + y.a_);
     Q yb, d;
     align(x, y, yb, d);
     return One_root_number(x.a_ + y.a_, x.b_ + yb, d);
@@ -164,12 +166,19 @@ public:
   friend One_root_number operator-(const One_root_number& x, const One_root_number& y) { return x + (-y); }
   friend One_root_number operator*(const One_root_number& x, const One_root_number& y)
   {
+    if(x.is_rational() && y.is_rational())
+      return One_root_number(x.a_ * y.a_);
     Q yb, d;
     align(x, y, yb, d);
     return One_root_number(x.a_ * y.a_ + x.b_ * yb * d, x.a_ * yb + x.b_ * y.a_, d);
   }
   friend One_root_number operator/(const One_root_number& x, const One_root_number& y)
   {
+    if(y.is_rational()) {
+      if(q_sign(y.a_) == ZERO)
+        throw Not_one_root();
+      return One_root_number(x.a_ / y.a_, x.b_ / y.a_, x.d_);
+    }
     // multiply by the conjugate of y
     const Q n = y.a_ * y.a_ - y.b_ * y.b_ * y.d_;
     if(q_sign(n) == ZERO)

@@ -53,11 +53,20 @@ public:
   {
     if(x == 0) return;
     if(!std::isfinite(x)) throw Small_rational_overflow();
+    if(std::fabs(x) < 4611686018427387904.0) {   // 2^62: the common case of integer coordinates
+      const std::int64_t i = std::int64_t(x);
+      if(double(i) == x) {
+        n_ = i;
+        return;
+      }
+    }
     int e;
     const double m = std::frexp(x, &e);              // x = m 2^e, 0.5 <= |m| < 1
     std::int64_t mi = std::int64_t(std::ldexp(m, 53));  // exact
     e -= 53;
-    while((mi & 1) == 0) { mi >>= 1; ++e; }
+    const int zeros = __builtin_ctzll(std::uint64_t(mi < 0 ? -mi : mi));
+    mi >>= zeros;
+    e += zeros;
     if(e >= 0) {
       if(e > 62) throw Small_rational_overflow();
       n_ = Int(mi) << e;
@@ -91,15 +100,16 @@ public:
   friend Small_rational operator*(const Small_rational& a, const Small_rational& b)
   {
     if(a.n_ == 0 || b.n_ == 0) return Small_rational();
+    if(a.d_ == 1 && b.d_ == 1) return raw(mul(a.n_, b.n_), 1);
     const Int g1 = gcd(a.n_, b.d_), g2 = gcd(b.n_, a.d_);
-    return raw(mul(a.n_ / g1, b.n_ / g2), mul(a.d_ / g2, b.d_ / g1));
+    return raw(mul(quotient(a.n_, g1), quotient(b.n_, g2)), mul(quotient(a.d_, g2), quotient(b.d_, g1)));
   }
   friend Small_rational operator/(const Small_rational& a, const Small_rational& b)
   {
     if(b.n_ == 0) throw Small_rational_overflow();   // not a number: let the caller decide with Gmpq
     if(a.n_ == 0) return Small_rational();
     const Int g1 = gcd(a.n_, b.n_), g2 = gcd(a.d_, b.d_);
-    Int n = mul(a.n_ / g1, b.d_ / g2), d = mul(a.d_ / g2, b.n_ / g1);
+    Int n = mul(quotient(a.n_, g1), quotient(b.d_, g2)), d = mul(quotient(a.d_, g2), quotient(b.n_, g1));
     if(d < 0) {
       if(n == min_int() || d == min_int()) throw Small_rational_overflow();
       n = -n;
@@ -146,8 +156,13 @@ private:
     return r;
   }
 
+  static bool fits_64(Int x) { return x >= Int(INT64_MIN) && x <= Int(INT64_MAX); }
+
+  // The 128-bit operations of libgcc (__divti3, __muloti4) cost tens of
+  // cycles; the numbers of grid coordinates mostly fit in 64 bits.
   static Int mul(Int a, Int b)
   {
+    if(fits_64(a) && fits_64(b)) return Int(std::int64_t(a)) * Int(std::int64_t(b));   // cannot overflow
     Int r;
     if(__builtin_mul_overflow(a, b, &r)) throw Small_rational_overflow();
     return r;
@@ -158,11 +173,35 @@ private:
     if(__builtin_add_overflow(a, b, &r)) throw Small_rational_overflow();
     return r;
   }
+  // a / g for g > 0 dividing a
+  static Int quotient(Int a, Int g)
+  {
+    if(g == 1) return a;
+    if(fits_64(a) && fits_64(g)) return Int(std::int64_t(a) / std::int64_t(g));
+    return a / g;
+  }
 
   static int ctz(Uint x)
   {
     const std::uint64_t lo = std::uint64_t(x);
     return lo != 0 ? __builtin_ctzll(lo) : 64 + __builtin_ctzll(std::uint64_t(x >> 64));
+  }
+
+  // binary gcd of u, v > 0
+  static std::uint64_t gcd_64(std::uint64_t u, std::uint64_t v)
+  {
+    const int shift = __builtin_ctzll(u | v);
+    u >>= __builtin_ctzll(u);
+    do {
+      v >>= __builtin_ctzll(v);
+      if(u > v) {
+        const std::uint64_t t = v;
+        v = u;
+        u = t;
+      }
+      v -= u;
+    } while(v != 0);
+    return u << shift;
   }
 
   // gcd(|a|, |b|) > 0 for a, b not both zero (binary gcd)
@@ -171,6 +210,8 @@ private:
     Uint u = a < 0 ? Uint(0) - Uint(a) : Uint(a), v = b < 0 ? Uint(0) - Uint(b) : Uint(b);
     if(u == 0) return Int(v);
     if(v == 0) return Int(u);
+    if(u == 1 || v == 1) return 1;
+    if(((u | v) >> 64) == 0) return Int(gcd_64(std::uint64_t(u), std::uint64_t(v)));
     const int shift = ctz(u | v);
     u >>= ctz(u);
     do {
@@ -195,14 +236,14 @@ private:
       const Int n = add(a.n_, bn);
       if(n == 0) return Small_rational();
       const Int g = gcd(n, a.d_);
-      return raw(n / g, a.d_ / g);
+      return raw(quotient(n, g), quotient(a.d_, g));
     }
     const Int g = gcd(a.d_, b.d_);
-    const Int n = add(mul(a.n_, b.d_ / g), mul(bn, a.d_ / g));
+    const Int n = add(mul(a.n_, quotient(b.d_, g)), mul(bn, quotient(a.d_, g)));
     if(n == 0) return Small_rational();
-    const Int d = mul(a.d_ / g, b.d_);
+    const Int d = mul(quotient(a.d_, g), b.d_);
     const Int h = gcd(n, d);
-    return raw(n / h, d / h);
+    return raw(quotient(n, h), quotient(d, h));
   }
 
   // the integer square root of x >= 0, if x is a perfect square
