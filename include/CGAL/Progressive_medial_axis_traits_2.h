@@ -552,7 +552,7 @@ public:
     const One_root_sqrt& big() const
     {
       if(!big_value)
-        big_value = std::make_shared<One_root_sqrt>(One_root_sqrt{small_value.alpha.to_gmpq(), small_value.rho.to_gmpq()});
+        big_value = std::make_shared<One_root_sqrt>(One_root_sqrt{small_value.alpha.to_big(), small_value.rho.to_big()});
       return *big_value;
     }
     Interval to_interval() const { return small ? small_value.to_interval() : big_value->to_interval(); }

@@ -28,6 +28,7 @@
 #ifndef CGAL_PROGRESSIVE_MEDIAL_AXIS_2_INTERNAL_ONE_ROOT_RATIONAL_H
 #define CGAL_PROGRESSIVE_MEDIAL_AXIS_2_INTERNAL_ONE_ROOT_RATIONAL_H
 
+#include <CGAL/Progressive_medial_axis_2/internal/Gmp_rational.h>
 #include <CGAL/Progressive_medial_axis_2/internal/Small_rational.h>
 
 #include <CGAL/Gmpq.h>
@@ -68,10 +69,15 @@ inline bool rational_square_root(const Gmpq& q, Gmpq& root)
 /// The value of a rational type as a Gmpq, its sign and an interval.
 inline const Gmpq& to_gmpq(const Gmpq& q) { return q; }
 inline Gmpq to_gmpq(const Small_rational& q) { return q.to_gmpq(); }
+inline Gmpq to_gmpq(const Gmp_rational& q) { return q.to_gmpq(); }
+inline Gmp_rational to_big(const Small_rational& q) { return Gmp_rational(q.to_gmpq()); }
+inline const Gmp_rational& to_big(const Gmp_rational& q) { return q; }
 inline Sign q_sign(const Gmpq& q) { return CGAL::sign(q); }
 inline Sign q_sign(const Small_rational& q) { return q.sign(); }
+inline Sign q_sign(const Gmp_rational& q) { return q.sign(); }
 inline Interval_nt<false> q_interval(const Gmpq& q) { return CGAL::to_interval(q); }
 inline Interval_nt<false> q_interval(const Small_rational& q) { return q.to_interval(); }
+inline Interval_nt<false> q_interval(const Gmp_rational& q) { return q.to_interval(); }
 
 /// sign(u + v sqrt(m)), m > 0.
 template <class Q>
@@ -109,10 +115,10 @@ public:
   bool is_rational() const { return q_sign(b_) == ZERO; }
   Sign sign() const { return sign_one_root(a_, b_, d_); }
 
-  /// The same number with Gmpq coefficients.
-  One_root_number<Gmpq> to_gmpq() const
+  /// The same number with unbounded (GMP) coefficients.
+  One_root_number<Gmp_rational> to_big() const
   {
-    return One_root_number<Gmpq>(internal::to_gmpq(a_), internal::to_gmpq(b_), internal::to_gmpq(d_));
+    return One_root_number<Gmp_rational>(internal::to_big(a_), internal::to_big(b_), internal::to_big(d_));
   }
 
   /// An interval that contains the value.
@@ -258,7 +264,7 @@ private:
   Q a_, b_, d_;
 };
 
-typedef One_root_number<Gmpq> One_root_rational;
+typedef One_root_number<Gmp_rational> One_root_rational;
 typedef One_root_number<Small_rational> Small_one_root;
 
 /// sign(B + C sqrt(rho)), rho >= 0.
