@@ -12,6 +12,8 @@
 //   pma_oneshot_2     the same on 2 threads
 //   pma_epick         the full progressive sequence with the double-precision traits
 //   pma_exact         the same with the CORE::Expr traits (Simple_cartesian<CORE::Expr>)
+//   pma_evolution     the discrete curve evolution alone (the simplification of
+//                     the boundary-evolved mode; its refinement is not built yet)
 //   sdg               Segment_Delaunay_graph_2, filtered traits without intersections
 //                     over Simple_cartesian<double> (construction of the diagram)
 //   sdg_hierarchy     the same with Segment_Delaunay_graph_hierarchy_2
@@ -52,6 +54,7 @@
 // refinement step (step 1 is the first merge).
 
 #include <CGAL/Progressive_medial_axis_2.h>
+#include <CGAL/Progressive_medial_axis_2/internal/Curve_evolution.h>
 #ifdef CGAL_LINKED_WITH_TBB
 #include <tbb/task_arena.h>
 #endif
@@ -142,6 +145,22 @@ double run_oneshot(const Rings& rings, std::string& note, int threads)
   return t;
 }
 
+// The discrete curve evolution alone (the paper's Table 2, time a): the
+// simplification that the boundary-evolved progressive mode undoes.
+double run_evolution(const Rings& rings, std::string& note)
+{
+  double t0 = now();
+  CGAL::Progressive_medial_axes::internal::Curve_evolution<CGAL::Epick> evolution(rings);
+  evolution.run();
+  double t = now() - t0;
+  const auto end = evolution.shape(evolution.removals().size());
+  std::size_t left = 0;
+  for(const auto& r : end) left += r.size();
+  note = "steps=" + std::to_string(evolution.removals().size()) + ";rings_left=" + std::to_string(end.size()) +
+         ";vertices_left=" + std::to_string(left);
+  return t;
+}
+
 template <class SDG>
 double run_sdg(const Rings& rings, std::string& note)
 {
@@ -210,6 +229,7 @@ double run_method(const std::string& m, const Rings& rings, std::string& note, d
     return run_pma<CGAL::Progressive_medial_axis_traits_2<CGAL::Simple_cartesian<CORE::Expr> > >(rings, note, "");
   if(m == "pma_oneshot_1") return run_oneshot(rings, note, 1);
   if(m == "pma_oneshot_2") return run_oneshot(rings, note, 2);
+  if(m == "pma_evolution") return run_evolution(rings, note);
   if(m == "sdg") return run_sdg<Sdg>(rings, note);
   if(m == "sdg_hierarchy") return run_sdg<Sdg_hierarchy>(rings, note);
   if(m == "sdg_extract") return run_sdg_extract(rings, note, aux);
@@ -218,7 +238,7 @@ double run_method(const std::string& m, const Rings& rings, std::string& note, d
   throw std::runtime_error("unknown method " + m);
 }
 
-const std::vector<std::string> all_methods = {"pma_filtered", "pma_oneshot_1", "pma_oneshot_2", "pma_epick", "pma_exact", "sdg",
+const std::vector<std::string> all_methods = {"pma_filtered", "pma_oneshot_1", "pma_oneshot_2", "pma_epick", "pma_exact", "pma_evolution", "sdg",
                                               "sdg_hierarchy", "sdg_extract", "sdg_exact", "boost_voronoi"};
 
 struct Measure {

@@ -11,6 +11,7 @@
 #include <CGAL/Progressive_medial_axis_2/Input_error.h>
 #include <pma_tool/polygon_io.h>
 #include <CGAL/Progressive_medial_axis_2/validate_polygon.h>
+#include <CGAL/Progressive_medial_axis_2/internal/Curve_evolution.h>
 
 #include <pma_test/check.h>
 
@@ -1137,6 +1138,140 @@ int test_locale()
   return 0;
 }
 
+// ------------------------------------------------------------- curve evolution
+
+// Runs the discrete curve evolution of `rings` and checks `checks` of its
+// shapes (all of them with 0), with the validator and, with `brute`, the
+// brute-force check.  Returns the number of rings left with more than three
+// vertices, or -1 on a failure.
+int check_evolution(const char* name, const Rings& rings, std::size_t checks, bool brute)
+{
+  CGAL::Progressive_medial_axes::internal::Curve_evolution<K> evolution(rings);
+  evolution.run();
+  const auto& removals = evolution.removals();
+  const std::size_t steps = removals.size();
+  std::vector<std::size_t> ks;
+  if(checks == 0 || checks >= steps) {
+    for(std::size_t k = 0; k <= steps; ++k) ks.push_back(k);
+  } else {
+    for(std::size_t i = 0; i <= checks; ++i) ks.push_back(steps * i / checks);
+  }
+  for(std::size_t k : ks) {
+    const Rings shape = evolution.shape(k);
+    bool ok = true;
+    try {
+      validate_touching(shape);
+    } catch(const Input_error& e) {
+      std::fprintf(stderr, "%s: shape after %zu of %zu removals is invalid: %s\n", name, k, steps, e.what());
+      ok = false;
+    }
+    if(ok && brute && !brute_force_valid_touching(shape)) {
+      std::fprintf(stderr, "%s: shape after %zu removals is invalid by brute force\n", name, k);
+      ok = false;
+    }
+    if(!ok) return -1;
+  }
+  // each removal took a vertex whose neighbours were alive then
+  std::vector<std::vector<char> > alive;
+  for(const auto& r : rings) alive.emplace_back(r.size(), 1);
+  for(const auto& rm : removals) {
+    auto& a = alive[std::size_t(rm.ring)];
+    if(rm.vertex < 0) {   // a triangular hole filled
+      if(rm.ring == 0 || std::count(a.begin(), a.end(), 1) != 3) {
+        std::fprintf(stderr, "%s: a filled ring that is not a triangular hole\n", name);
+        return -1;
+      }
+      std::fill(a.begin(), a.end(), 0);
+      continue;
+    }
+    if(!a[std::size_t(rm.vertex)] || !a[std::size_t(rm.prev)] || !a[std::size_t(rm.next)]) {
+      std::fprintf(stderr, "%s: removal of a dead vertex or next to one\n", name);
+      return -1;
+    }
+    a[std::size_t(rm.vertex)] = 0;
+  }
+  const Rings last = evolution.shape(steps);
+  int larger = 0;
+  for(const auto& r : last) {
+    if(r.size() < 3) {
+      std::fprintf(stderr, "%s: a ring with fewer than 3 vertices\n", name);
+      return -1;
+    }
+    larger += r.size() > 3;
+  }
+  return larger;
+}
+
+template <class Evolution>
+Rings evolution_end(const Evolution& e) { return e.shape(e.removals().size()); }
+
+int test_curve_evolution()
+{
+  // shipped shapes: 40 shapes along each evolution (every shape of the small ones)
+  const char* names[] = { "syn_cheese1k.wkt", "syn_comb50.wkt", "syn_maze20.wkt", "syn_ngon64.wkt",
+                          "syn_sliver500.wkt", "syn_spiral20.wkt", "syn_star2k.wkt", "c1m_GBR_0.wkt",
+                          "touching/c1m_AUS_33982.wkt", "touching/c1m_PNG_21.wkt", "touching/l10m_RUS_30511.wkt",
+                          "touching/syn_island.wkt", "touching/syn_pinch.wkt", "touching/syn_t_self.wkt",
+                          "touching/syn_t_notch.wkt", "touching/syn_three_holes.wkt", "touching/syn_hole_corner.wkt" };
+  for(const char* name : names) {
+    const Rings rings = pma_tool::read_polygon_file<Point>(data(name));
+    std::size_t n = 0;
+    for(const auto& r : rings) n += r.size();
+    const auto start = std::chrono::steady_clock::now();
+    CGAL::Progressive_medial_axes::internal::Curve_evolution<K> timed(rings);
+    timed.run();
+    const double seconds = seconds_since(start);
+    const int larger = check_evolution(name, rings, n < 300 ? 0 : 40, false);
+    REQUIRE(larger >= 0);
+    std::printf("  %-30s %7zu vertices %5zu rings: evolution %.3f s, %zu removals, %d rings left above 3 vertices\n",
+                name, n, rings.size(), seconds, timed.removals().size(), larger);
+    // without touching rings, the evolution ends with a triangle
+    if(std::strncmp(name, "touching/", 9) != 0)
+      REQUIRE(larger == 0 && evolution_end(timed).size() == 1);
+  }
+  // random polygons with holes, some touching: every shape checked, also by brute force
+  std::mt19937 rng(77);
+  auto uniform = [&](int lo, int hi) { return std::uniform_int_distribution<int>(lo, hi)(rng); };
+  int tried = 0, checked = 0, left_larger = 0;
+  for(int trial = 0; trial < 3000; ++trial) {
+    Rings rings;
+    const int n = uniform(3, 24);
+    std::vector<double> angles;
+    for(int i = 0; i < n; ++i) angles.push_back(std::uniform_real_distribution<double>(0, 6.283185307179586)(rng));
+    std::sort(angles.begin(), angles.end());
+    rings.emplace_back();
+    for(double a : angles) {
+      const double radius = uniform(10, 40);
+      rings.back().push_back(Point(std::round(50 + radius * std::cos(a)), std::round(50 + radius * std::sin(a))));
+    }
+    const int holes = uniform(0, 5);
+    for(int h = 0; h < holes; ++h) {
+      const int x = 4 * uniform(9, 15), y = 4 * uniform(9, 15);   // diamonds of a lattice: may touch
+      if(trial % 2)
+        rings.push_back({ Point(x + 2, y), Point(x, y + 2), Point(x + 2, y + 4), Point(x + 4, y + 2) });
+      else
+        rings.push_back({ Point(x, y), Point(x, y + 3), Point(x + 1, y + 1), Point(x + 3, y) });
+    }
+    ++tried;
+    try {
+      validate_touching(rings);
+    } catch(const Input_error&) {
+      continue;
+    }
+    ++checked;
+    const int larger = check_evolution("random", rings, 0, true);
+    if(larger < 0) {
+      std::fprintf(stderr, "  random trial %d failed\n", trial);
+      REQUIRE(false);
+    }
+    left_larger += larger;
+  }
+  std::printf("  %d random polygons (%d valid) evolved, every shape valid; %d rings left above 3 vertices\n", tried,
+              checked, left_larger);
+  REQUIRE(checked > 300);
+  return 0;
+}
+
 int main()
 {
   struct Test { const char* name; int (*run)(); };
@@ -1151,6 +1286,7 @@ int main()
     { "invalid polygons", test_invalid_polygons },
     { "touching rings", test_touching_rings },
     { "random polygons", test_random_against_brute_force },
+    { "curve evolution", test_curve_evolution },
     { "reader fuzz", test_reader_fuzz },
     { "performance", test_performance },
     { "locale", test_locale },

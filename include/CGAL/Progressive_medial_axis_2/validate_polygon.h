@@ -178,6 +178,13 @@ public:
 
   /// After `run()`: whether a vertex lies inside an edge (with `allow_touching`).
   bool has_vertices_on_edges() const { return !m_on_edges.empty(); }
+  /// After `run()`: the vertices that lie inside an edge, as (ring, index) pairs.
+  std::vector<std::pair<int, int> > vertices_on_edges() const
+  {
+    std::vector<std::pair<int, int> > r;
+    for(const auto& ve : m_on_edges) r.emplace_back(int(ring_of(ve.first)), int(local(ve.first)));
+    return r;
+  }
 
 private:
   // ---------------------------------------------------------------- helpers
