@@ -542,7 +542,7 @@ public:
   }
 
   /// The time as alpha + sqrt(rho) in one-root numbers, with small
-  /// rationals when they suffice, else with Gmpq.
+  /// rationals when they suffice, else with GMP rationals (Gmp_rational).
   struct One_root_value {
     bool exists = false;           // the event exists (false: the time is not an event)
     bool small = false;            // `small_value` holds it
@@ -908,7 +908,7 @@ private:
   }
 
   // Whether two triples define the same disk: double intervals, then exact
-  // one-root numbers (small, then Gmpq), then nested-root numbers.
+  // one-root numbers (small, then GMP), then nested-root numbers.
   static bool same_disk(const Site_2* s, const Site_2* t)
   {
     const Progressive_medial_axes::internal::Triple_relations rs = Progressive_medial_axes::internal::triple_relations<CK>(s);
