@@ -567,7 +567,8 @@ int main(int argc, char** argv)
                        "syn_three_holes", "syn_pinch", "syn_island", "syn_island_min", "syn_reflex_touch",
                        "syn_hole_at_reflex", "syn_pinch_small", "syn_touch_at_smallest", "c1m_AUS_33982", "c1m_NGA_47424", "c1m_USA_24161", "c1m_NOR_55654",
                        // a vertex inside an edge (T's)
-                       "syn_t_self", "syn_t_hole_edge", "syn_t_two_holes_one_point", "syn_t_hole_hole", "syn_t_notch", "l10m_RUS_30511"})
+                       "syn_t_self", "syn_t_hole_edge", "syn_t_two_holes_one_point", "syn_t_hole_hole", "syn_t_notch", "l10m_RUS_30511",
+                       "syn_t_both_sides", "syn_t_both_sides_two_holes", "syn_t_both_sides_square"})
     pairs_against_oracle(data + "/touching/" + f + ".wkt", {-1, 1, 2, 3, 5, 50, 400});
   pairs_against_oracle(data + "/touching/c1m_PNG_21.wkt", {-1, 3000});
   outputs(data);

@@ -165,10 +165,6 @@ public:
     check_vertices_on_edges();
     if(nesting)
       check_nesting();
-    if(m_unsupported != NO_VERTEX)
-      fail("not supported yet: " + vertex_name(m_unsupported) + " lies inside an edge with vertices on both of its sides at " +
-               point_text(m_unsupported),
-           m_unsupported);
   }
 
   /// After `run(false)`: the ring directly enclosing each ring, or -1 (the
@@ -416,17 +412,14 @@ private:
         try {
           check_touching_point(k, end);
         } catch(const Input_error&) {
-          // An edge through the place would add two rays (a T with vertices on
-          // both sides of the edge, such as an exterior pocket of the outer ring
-          // and a hole touching its edge at one point).  The engine does not
-          // handle that yet (the triangulation's split of the edge there gave a
-          // wrong axis): said so rather than reported as a crossing.
+          // An edge through the place adds two rays (a T with vertices on both
+          // sides of the edge, such as an exterior pocket of the outer ring and
+          // a hole touching its edge at one point): valid if the sectors
+          // alternate with them.
           const std::vector<Id> through = edges_through(m_order[k]);
           if(through.empty())
             throw;
-          check_touching_point(k, end, through);   // a crossing there after all?
-          if(m_unsupported == NO_VERTEX)
-            m_unsupported = m_order[k];   // reported last: a real problem found later comes first
+          check_touching_point(k, end, through);
         }
       }
       k = end;
@@ -820,7 +813,6 @@ private:
   mutable Contact m_contact = NO_CONTACT;
   mutable std::vector<std::pair<Id, Id> > m_on_edges;   // (vertex, edge) found by the sweep
   static constexpr Id NO_VERTEX = Id(-1);
-  Id m_unsupported = NO_VERTEX;   // a T with vertices on both sides of its edge (see check_touching_vertices())
   mutable Id m_contact_a = 0, m_contact_b = 0, m_contact_vertex = 0;
 };
 

@@ -173,10 +173,20 @@ void link_touching_corners(Data& data, const Orientation& orientation)
       if(ua != ub) return ua;
       return orientation(p, qa, qb) == LEFT_TURN;
     });
+    // Outgoing and incoming edges alternate around P, unless an edge passes
+    // through P (a "T" with corners on both of its sides): the place is then
+    // linked after triangulate_rings() has split that edge at P.
+    const std::size_t m = rays.size();
+    bool alternate = true;
+    for(std::size_t i = 0; i < m; ++i)
+      alternate = alternate && rays[i].outgoing != rays[(i + 1) % m].outgoing;
+    if(!alternate) {
+      k = end;
+      continue;
+    }
     // sectors: an outgoing edge and the incoming edge counterclockwise after it
     struct Sector { int out_to, out_edge_ring, out_edge_index, in_from; bool reflex; };
     std::vector<Sector> sectors;
-    const std::size_t m = rays.size();
     for(std::size_t i = 0; i < m; ++i) {
       if(!rays[i].outgoing) continue;
       const Ray& in = rays[(i + 1) % m];
