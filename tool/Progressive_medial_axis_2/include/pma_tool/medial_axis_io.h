@@ -54,9 +54,17 @@ public:
       // vertex's place, so one input vertex occurs twice (never as a point
       // generator: no sector there is reflex); the occurrence followed by
       // the edge's target names the edge.
+      // A point generator where rings touch is named after the first
+      // position of its place, as in INPUT mode.
+      typedef std::pair<double, double> Place;
+      std::map<Place, Occurrence> first;
       for(std::size_t r = 0; r < rings_.size(); ++r)
-        for(std::size_t i = 0; i < rings_[r].size(); ++i)
-          position_[rings_[r][i]].push_back(Occurrence{int(r), int(i), rings_[r][(i + 1) % rings_[r].size()]});
+        for(std::size_t i = 0; i < rings_[r].size(); ++i) {
+          const Occurrence o{int(r), int(i), rings_[r][(i + 1) % rings_[r].size()]};
+          position_[rings_[r][i]].push_back(o);
+          first.emplace(Medial_axis::to_xy(ma.point(rings_[r][i])), o);
+        }
+      for(auto& p : position_) point_position_[p.first] = first.at(Medial_axis::to_xy(ma.point(p.first)));
     }
   }
 
@@ -64,6 +72,10 @@ public:
   {
     if(mode_ == INPUT)
       return g.id();
+    if(g.is_point()) {
+      const Occurrence& pos = point_position_.at(g.source_vertex());
+      return "v" + std::to_string(pos.ring) + "." + std::to_string(pos.index);
+    }
     const std::vector<Occurrence>& at = position_.at(g.source_vertex());
     const Occurrence* pos = &at.front();
     for(const Occurrence& o : at)
@@ -79,6 +91,7 @@ private:
   std::vector<std::vector<Input_vertex> > rings_;
   struct Occurrence { int ring, index; Input_vertex next; };
   std::map<Input_vertex, std::vector<Occurrence> > position_;
+  std::map<Input_vertex, Occurrence> point_position_;
 };
 
 /// A medial curve of an output, or the part of it that a pruning keeps:
