@@ -22,6 +22,7 @@
 #include <CGAL/Progressive_medial_axis_2/internal/Input_conversion.h>
 #include <CGAL/Progressive_medial_axis_2/internal/Medial_axis_engine.h>
 #include <CGAL/Progressive_medial_axis_2/internal/Region_growing.h>
+#include <CGAL/Progressive_medial_axis_2/internal/Boundary_evolution.h>
 #include <CGAL/Progressive_medial_axis_2/internal/Divide_and_conquer.h>
 
 #include <CGAL/Polygon_2.h>
@@ -54,15 +55,46 @@ enum Medial_axis_input_check { CHECK_INPUT, TRUST_INPUT };
 
 /*!
 \ingroup PkgProgressiveMedialAxis2Ref
+The two progressive modes of the paper (Liu et al., 2016, section 6), the
+driver of a `Progressive_medial_axis_2`.
+*/
+enum Progressive_medial_axis_driver {
+  /// section 6.1: triangles of a constrained Delaunay triangulation added
+  /// one by one, breadth first from the largest
+  REGION_GROWING,
+  /// section 6.2: the boundary simplified by discrete curve evolution, then
+  /// refined vertex by vertex
+  BOUNDARY_EVOLUTION
+};
 
-A region-growing progressive medial axis (Liu et al., 2016, section 6.1).
+/*!
+\ingroup PkgProgressiveMedialAxis2Ref
 
-The polygon is cut into triangles by a constrained Delaunay triangulation.
-Step 0 is the medial axis of one triangle (the largest); every further step
-merges the next triangle of a breadth-first traversal of the triangulation's
-dual graph into the grown shape, with the topology-oriented merge along the
-shared edge.  After any step, `medial_axis()` is the medial axis of
-`current_shape()`; after the last step it is that of the polygon.
+A progressive medial axis (Liu et al., 2016, section 6): a coarse shape's
+medial axis at step 0, refined step by step until it is the medial axis of
+the polygon.  After any step, `medial_axis()` is the medial axis of
+`current_shape()`; after the last step it is that of the polygon.  Two
+drivers decide the steps (`Progressive_medial_axis_driver`):
+
+<b>Region growing</b> (the default, section 6.1).  The polygon is cut into
+triangles by a constrained Delaunay triangulation.  Step 0 is the medial
+axis of one triangle (the largest); every further step merges the next
+triangle of a breadth-first traversal of the triangulation's dual graph
+into the grown shape, with the topology-oriented merge along the shared
+edge.
+
+<b>Boundary evolution</b> (section 6.2).  The boundary is simplified by
+discrete curve evolution (Latecki and Lakaemper): a vertex of least
+relevance K = beta l1 l2 / (l1 + l2) (beta the turning angle, l1 and l2 the
+lengths of its two edges relative to the total boundary length) is
+removed, its two edges replaced by one segment, as long as the shape stays
+valid; every ring down to a triangle.  Holes are not filled: they are
+there from step 0 on, as triangles.  Step 0 is the medial axis of the
+coarsest shape (computed in one shot); every further step puts back one
+vertex, the last removed first: a triangle added outside the shape (a
+merge), cut out of it (a local update of the cells the two new edges
+touch), or a straight vertex put back into an edge.  The shapes look like
+the whole outline at a lower resolution.
 
 The input is any \cgal polygon (`Polygon_2`, `Polygon_with_holes_2`, of any
 kernel and container) or a range of rings (ranges of points of a \cgal
@@ -120,13 +152,27 @@ public:
     init(Progressive_medial_axes::internal::rings_of<Kernel>(rings), check);
   }
 
+  /// Builds the progressive medial axis of `polygon` (a `Polygon_2`, a
+  /// `Polygon_with_holes_2` or a range of rings, as above) with the driver
+  /// `driver`, and computes step 0.
+  template <class Input>
+  Progressive_medial_axis_2(const Input& polygon, Progressive_medial_axis_driver driver,
+                            const Traits& traits = Traits(), Medial_axis_input_check check = CHECK_INPUT)
+    : traits_(traits), driver_kind_(driver)
+  {
+    init(Progressive_medial_axes::internal::rings_of<Kernel>(polygon), check);
+  }
+
   Progressive_medial_axis_2(const Progressive_medial_axis_2&) = delete;
   Progressive_medial_axis_2& operator=(const Progressive_medial_axis_2&) = delete;
 
-  /// Number of refinement steps of the whole computation.  A step merges
-  /// one triangle, or a few when one alone would make the shape touch itself
-  /// at a vertex (see the user manual).
+  /// Number of refinement steps of the whole computation.  With region
+  /// growing, a step merges one triangle, or a few when one alone would make
+  /// the shape touch itself at a vertex (see the user manual); with boundary
+  /// evolution it puts back one vertex.
   std::size_t number_of_steps() const { return number_of_steps_; }
+  /// The driver that decides the steps.
+  Progressive_medial_axis_driver driver() const { return driver_kind_; }
   /// Steps done so far (0 right after construction).
   std::size_t current_step() const { return step_; }
   /// Whether every step has been done.
@@ -153,7 +199,8 @@ public:
     const auto start = std::chrono::steady_clock::now();
     ++step_;
     Counting_visitor<Visitor> counting{visitor, stats_};
-    const std::size_t n_v = driver_->step(step_, counting);
+    const std::size_t n_v = region_ ? region_->step(step_, counting) : boundary_->step(step_, counting);
+    if(boundary_) stats_.recomputed_steps = boundary_->recomputed_steps();
     if(n_v > stats_.max_queue) stats_.max_queue = n_v;
     stats_.merge_seconds += seconds_since(start);
     visitor.on_step(step_, n_v);
@@ -194,7 +241,8 @@ public:
     medial_axis();
     Medial_axis out = std::move(view_);
     view_ = Medial_axis();
-    driver_.reset();
+    region_.reset();
+    boundary_.reset();
     engine_.reset();
     data_.reset();
     return out;
@@ -222,7 +270,8 @@ public:
 private:
   typedef Progressive_medial_axes::internal::Medial_axis_engine<Traits> Engine;
   typedef typename Engine::Data Data;
-  typedef Progressive_medial_axes::internal::Region_growing<Traits> Driver;
+  typedef Progressive_medial_axes::internal::Region_growing<Traits> Region_driver;
+  typedef Progressive_medial_axes::internal::Boundary_evolution<Traits> Boundary_driver;
 
   // Passes the events on, counting them.
   template <class Visitor>
@@ -237,6 +286,11 @@ private:
       stats.anomalies += m.anomalies;
       stats.redone_merges += m.redone_exactly ? 1 : 0;
       visitor.on_merge(m);
+    }
+    void on_cut(bool is_cut, const Progressive_medial_axes::internal::Cut_statistics& c)
+    {
+      ++(is_cut ? stats.cuts : stats.splits);
+      stats.redone_merges += c.redone_exactly ? 1 : 0;
     }
   };
 
@@ -258,24 +312,47 @@ private:
     stats_.input_vertices = data_->points.size();
     stats_.holes = rings.size() - 1;
 
-    t0 = std::chrono::steady_clock::now();
+    const auto first = std::chrono::steady_clock::now();
+    t0 = first;
     engine_.reset(new Engine(*data_, traits_));
-    driver_.reset(new Driver(*engine_));
-    stats_.triangles = driver_->number_of_triangles();
-    stats_.triangulation_seconds = seconds_since(t0);
-    number_of_steps_ = driver_->number_of_steps();
+    if(driver_kind_ == REGION_GROWING) {
+      region_.reset(new Region_driver(*engine_));
+      stats_.triangles = region_->number_of_triangles();
+      stats_.triangulation_seconds = seconds_since(t0);
+      number_of_steps_ = region_->number_of_steps();
+    } else {
+      boundary_.reset(new Boundary_driver(*engine_, rings));
+      stats_.evolution_seconds = seconds_since(t0);
+      number_of_steps_ = boundary_->number_of_steps();
+    }
 
     data_->hds.reserve(2 * data_->points.size() + 16, 4 * data_->points.size() + 16);
     const auto t1 = std::chrono::steady_clock::now();
-    driver_->start();
-    stats_.merge_seconds = seconds_since(t1);
+    if(region_) {
+      region_->start();
+      stats_.merge_seconds = seconds_since(t1);
+    } else {
+      boundary_->start();
+      stats_.triangles = boundary_->number_of_triangles();
+      const auto& c = boundary_->start_counts();
+      stats_.merges = c.merges;
+      stats_.switches = c.switches;
+      stats_.vanishings = c.vanishings;
+      stats_.anomalies = c.anomalies;
+      stats_.redone_merges = c.redone_merges;
+      stats_.max_queue = c.max_queue;
+      stats_.merge_seconds = seconds_since(t1);
+    }
     view_ = Medial_axis(std::shared_ptr<const Data>(data_));
+    stats_.first_step_seconds = seconds_since(first);
   }
 
   Traits traits_;
   std::shared_ptr<Data> data_;
   std::unique_ptr<Engine> engine_;
-  std::unique_ptr<Driver> driver_;
+  Progressive_medial_axis_driver driver_kind_ = REGION_GROWING;
+  std::unique_ptr<Region_driver> region_;
+  std::unique_ptr<Boundary_driver> boundary_;
   Medial_axis view_;
   mutable std::mutex mutex_;
   std::size_t step_ = 0, number_of_steps_ = 0;

@@ -135,15 +135,19 @@ Site_nt<NT> site_nt(const Site_& s, const Convert& cv)
 
 /// Whether a circle computed in double is tangent to its three sites, up to
 /// a relative 1e-9 of the coordinates involved: a check against the wild
-/// results of ill-conditioned constructions, not a proof.
+/// results of ill-conditioned constructions, not a proof.  With `vertex`,
+/// the circle is a vertex of the result and must be tangent within 1e-9 of
+/// its radius (and a few units in the last place of its centre): the double
+/// model builds it with exact decisions otherwise.
 template <class NT>
-bool plausible_circle(const Site_nt<NT> s[3], const Triple_relations& rel, const Circle_nt<NT>& c)
+bool plausible_circle(const Site_nt<NT> s[3], const Triple_relations& rel, const Circle_nt<NT>& c, bool vertex = false)
 {
   using std::fabs;
   NT scale = fabs(c.x) + fabs(c.y) + fabs(c.r);
+  const NT centre_scale = scale;
   for(int i = 0; i < 3; ++i)
     scale = (std::max)(scale, (std::max)((std::max)(fabs(s[i].ax), fabs(s[i].ay)), (std::max)(fabs(s[i].bx), fabs(s[i].by))));
-  const NT tolerance = NT(1e-9) * scale;
+  const NT tolerance = vertex ? NT(1e-9) * fabs(c.r) + NT(32 * 2.220446049250313e-16) * centre_scale : NT(1e-9) * scale;
   if(!(c.r >= 0) || !std::isfinite(c.x) || !std::isfinite(c.y)) return false;
   for(int i = 0; i < 3; ++i) {
     NT d;
@@ -152,7 +156,16 @@ bool plausible_circle(const Site_nt<NT> s[3], const Triple_relations& rel, const
       d = std::sqrt(dx * dx + dy * dy);
     } else {
       const NT dx = s[i].bx - s[i].ax, dy = s[i].by - s[i].ay;
-      d = fabs(dx * (c.y - s[i].ay) - dy * (c.x - s[i].ax)) / std::sqrt(dx * dx + dy * dy);
+      const NT l2 = dx * dx + dy * dy;
+      const NT f = dx * (c.x - s[i].ax) + dy * (c.y - s[i].ay);
+      if(vertex && !(f > 0 && f < l2)) {
+        // a vertex touches the segment itself: off its line's foot within
+        // the segment, the distance is that to the nearer end
+        const NT ex = c.x - (f > 0 ? s[i].bx : s[i].ax), ey = c.y - (f > 0 ? s[i].by : s[i].ay);
+        d = std::sqrt(ex * ex + ey * ey);
+      } else {
+        d = fabs(dx * (c.y - s[i].ay) - dy * (c.x - s[i].ax)) / std::sqrt(l2);
+      }
     }
     if(fabs(d - c.r) > tolerance) return false;
   }
@@ -161,7 +174,12 @@ bool plausible_circle(const Site_nt<NT> s[3], const Triple_relations& rel, const
 }
 
 /// TIME_FOOT: the foot on the separator of the point of site s[0].
-enum Time_kind : unsigned char { TIME_ZERO, TIME_END, TIME_SWITCH, TIME_VANISH, TIME_FOOT };
+/// TIME_CONFLICT: not a time, but a number of the same algebraic kind whose
+/// sign is asked: the squared distance from the centre of the disk tangent to
+/// s[0], s[1], s[2] to the closed segment `line`, minus the squared radius
+/// (negative: the open disk meets the segment; the cut of boundary
+/// evolution, Medial_cut.h).
+enum Time_kind : unsigned char { TIME_ZERO, TIME_END, TIME_SWITCH, TIME_VANISH, TIME_FOOT, TIME_CONFLICT };
 
 /// A vertex of the separator's cell whose disk passes through an endpoint of
 /// the separator (a reflex vertex there) lies on the normal at that endpoint:
@@ -211,6 +229,10 @@ bool evaluate_time(Time_kind kind, const Site_& c, const Site_* s, const Triple_
   }
   if(kind == TIME_SWITCH) {
     t = foot_position(px, py, qx, qy, circle);
+    return true;
+  }
+  if(kind == TIME_CONFLICT) {
+    t = conflict_value(px, py, qx, qy, circle);
     return true;
   }
   // a vanishing point needs a disk that touches the segments themselves
@@ -370,6 +392,32 @@ public:
     }
   };
 
+  /// Time, along the segment `line` (from its source to its target), of the
+  /// foot of the centre of the disk tangent to `a, b, c` in counter-clockwise
+  /// order, a disk that need not touch `line`.  False if there is no such
+  /// disk.
+  struct Compute_disk_foot_time_2 {
+    bool operator()(const Site_2& line, const Site_2& a, const Site_2& b, const Site_2& c, Event_time_2& t) const
+    {
+      Site_2 s[3] = {a, b, c};
+      return Model::time(TIME_SWITCH, line, s, t);
+    }
+  };
+
+  /// Whether the open disk tangent to `a, b, c` (counter-clockwise around
+  /// its centre; the disk must exist) meets the closed segment `segment`:
+  /// the vertex of the medial axis at its centre is in conflict with a new
+  /// boundary edge (the cut of boundary evolution).
+  struct Do_intersect_disk_segment_2 {
+    bool operator()(const Site_2& a, const Site_2& b, const Site_2& c, const Site_2& segment) const
+    {
+      Site_2 s[3] = {a, b, c};
+      return Model::conflict(segment, s);
+    }
+  };
+
+  Compute_disk_foot_time_2 compute_disk_foot_time_2_object() const { return Compute_disk_foot_time_2(); }
+  Do_intersect_disk_segment_2 do_intersect_disk_segment_2_object() const { return Do_intersect_disk_segment_2(); }
   Equal_medial_disks_2 equal_medial_disks_2_object() const { return Equal_medial_disks_2(); }
   Compute_start_time_2 compute_start_time_2_object() const { return Compute_start_time_2(); }
   Compute_end_time_2 compute_end_time_2_object() const { return Compute_end_time_2(); }
@@ -483,7 +531,7 @@ private:
       bool built = false;
       try {
         built = Progressive_medial_axes::internal::medial_circle(sn, rel, circle) &&
-                Progressive_medial_axes::internal::plausible_circle(sn, rel, circle);
+                Progressive_medial_axes::internal::plausible_circle(sn, rel, circle, true);
       } catch(Progressive_medial_axes::internal::Uncertain_decision&) {
       }
       if(!built)
@@ -502,6 +550,31 @@ private:
     Point_2 a, b;
     FT ra, rb;
     return disk(s, a, ra) && disk(t, b, rb) && a == b && ra == rb;
+  }
+
+  // In double precision a value within a relative 1e-9 of zero (a tangency,
+  // or near one) is not decided: the cut is redone with exact decisions.
+  static bool conflict(const Site_2& segment, const Site_2* s)
+  {
+    namespace I = Progressive_medial_axes::internal;
+    const I::Triple_relations rel = I::triple_relations<K>(s);
+    I::Identity_convert cv;
+    if constexpr(Floating) {
+      I::Site_nt<FT> sn[3] = {I::site_nt<FT>(s[0], cv), I::site_nt<FT>(s[1], cv), I::site_nt<FT>(s[2], cv)};
+      I::Circle_nt<FT> c;
+      if(!I::medial_circle(sn, rel, c) || !I::plausible_circle(sn, rel, c))
+        throw I::Uncertain_decision();
+      const FT v = I::conflict_value(segment.p.x(), segment.p.y(), segment.q.x(), segment.q.y(), c);
+      I::check_sign_is_clear(v, FT(c.r * c.r + std::fabs(v)));
+      return v < 0;
+    } else {
+      FT v;
+      if(!I::evaluate_time<FT>(I::TIME_CONFLICT, segment, s, rel, cv, v)) {
+        CGAL_assertion_msg(false, "a vertex without a disk");
+        return false;
+      }
+      return CGAL::is_negative(v);
+    }
   }
 };
 
@@ -941,6 +1014,20 @@ private:
     }
     Progressive_medial_axes::internal::Nested_root_context context;
     return equal(Nested());
+  }
+
+  // Whether the open disk of the triple meets the closed segment: the sign
+  // of a number evaluated and compared with 0 through the stages of an
+  // event time.
+  static bool conflict(const Site_2& segment, const Site_2* s)
+  {
+    Event_time_2 t, zero;
+    if(!time(Progressive_medial_axes::internal::TIME_CONFLICT, segment, s, t)) {
+      CGAL_assertion_msg(false, "a vertex without a disk");
+      return false;
+    }
+    time(Progressive_medial_axes::internal::TIME_ZERO, segment, nullptr, zero);
+    return compare_times(t, zero) == SMALLER;
   }
 
   // The stages between the double intervals and the nested-root numbers, in

@@ -8,7 +8,15 @@ add_test(NAME oracle_degenerate COMMAND test_medial_axis_oracle --only degenerat
 # uncertain decisions redone exactly) on the data and degenerate shapes too.
 add_test(NAME oracle_epick COMMAND test_medial_axis_oracle --traits epick --quick)
 add_test(NAME oracle_exact COMMAND test_medial_axis_oracle --traits exact --quick --only random,union)
-set_tests_properties(oracle_filtered oracle_degenerate oracle_epick oracle_exact PROPERTIES TIMEOUT 1800)
+# Boundary evolution (--driver boundary): the axis of every step compared
+# (random polygons, with holes), or of steps spread over the run (shapes).
+add_test(NAME oracle_boundary COMMAND test_medial_axis_oracle --driver boundary --only random,holes)
+add_test(NAME oracle_boundary_shapes COMMAND test_medial_axis_oracle --driver boundary --quick
+         --only regressions,data,degenerate,touching)
+add_test(NAME oracle_boundary_epick COMMAND test_medial_axis_oracle --driver boundary --traits epick --quick
+         --only random,holes,touching)
+set_tests_properties(oracle_filtered oracle_degenerate oracle_epick oracle_exact oracle_boundary oracle_boundary_shapes
+                     oracle_boundary_epick PROPERTIES TIMEOUT 1800)
 
 # The command-line tool's contract, against the oracle program sdg_pairs
 # (defined in oracle.cmake).

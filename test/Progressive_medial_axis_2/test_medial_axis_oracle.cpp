@@ -6,6 +6,7 @@
 //   test_medial_axis_oracle [--quick] [--only SECTION,...] [--skip SHAPE]
 //       sections: regressions, random, holes, data, degenerate, touching, union
 //                           [--traits filtered|epick|exact] [--seed-base N]
+//                           [--driver region|boundary]
 //
 // On a failure it prints the seed and the polygon as WKT, to be minimised
 // and added to data/regressions/.
@@ -85,6 +86,9 @@ double boundary_distance(const std::vector<std::vector<std::pair<double, double>
       d = (std::min)(d, distance_to_segment(x, y, r[j].first, r[j].second, r[i].first, r[i].second));
   return d;
 }
+
+// The driver of the progressive runs (--driver region|boundary).
+CGAL::Progressive_medial_axis_driver g_driver = CGAL::REGION_GROWING;
 
 struct Options {
   bool quick = false;
@@ -259,7 +263,7 @@ bool run_polygon(Checker<Traits>& checker, const Rings& rings, const std::string
                  std::vector<double> fractions = {})
 {
   typedef CGAL::Progressive_medial_axis_2<Traits> PMA;
-  PMA pma(rings);
+  PMA pma(rings, g_driver);
   const int before = pma_test::failures();
   if(every_step) {
     do {
@@ -278,8 +282,8 @@ bool run_polygon(Checker<Traits>& checker, const Rings& rings, const std::string
     checker.compare(pma, true, what, rings);
   // exact decisions never force an event; the double model redoes such merges
   CHECK(pma.statistics().anomalies == 0, what << ": " << pma.statistics().anomalies << " forced events");
-  // the one-shot divide and conquer, cut into 1 to 9 parts
-  if(pma_test::failures() == before) {
+  // the one-shot divide and conquer, cut into 1 to 9 parts (with region growing)
+  if(pma_test::failures() == before && g_driver == CGAL::REGION_GROWING) {
     static std::size_t count = 0;
     const std::size_t parts = 1 + (count++ % 9);
     CGAL::Progressive_medial_axis_statistics stats;
@@ -440,7 +444,7 @@ void degenerate_tests(Checker<Traits>& checker, const Options& o)
   for(const Shape& shape : shapes) {
     if(shape.every_50th) {
       typedef CGAL::Progressive_medial_axis_2<Traits> PMA;
-      PMA pma(shape.rings);
+      PMA pma(shape.rings, g_driver);
       std::vector<double> fractions;
       for(std::size_t s = 50; s < pma.number_of_steps(); s += 50) fractions.push_back(double(s) / double(pma.number_of_steps()));
       run_polygon(checker, shape.rings, shape.name, false, fractions);
@@ -946,6 +950,11 @@ int main(int argc, char** argv)
     else if(a == "--seed-base" && i + 1 < argc) o.seed_base = std::strtoull(argv[++i], nullptr, 10);
     else if(a == "--skip" && i + 1 < argc) o.skip.push_back(argv[++i]);
     else if(a == "--no-grid") o.no_grid = true;
+    else if(a == "--driver" && i + 1 < argc) {
+      const std::string d = argv[++i];
+      if(d != "region" && d != "boundary") { std::cerr << "--driver region|boundary\n"; return 2; }
+      g_driver = d == "boundary" ? CGAL::BOUNDARY_EVOLUTION : CGAL::REGION_GROWING;
+    }
     else { std::cerr << "unknown argument " << a << "\n"; return 2; }
   }
   if(o.traits == "epick") return run_all<CGAL::Progressive_medial_axis_traits_2<CGAL::Simple_cartesian<double> > >(o);

@@ -75,6 +75,16 @@ public:
   /// same disk (two vertices of the axis at one point, where four or more
   /// generators meet).
   typedef unspecified_type Equal_medial_disks_2;
+  /// A function object: `bool operator()(Site_2 line, Site_2 a, Site_2 b, Site_2 c, Event_time_2& t)`:
+  /// the time along the segment `line` of the foot of the centre of the disk
+  /// tangent to `a, b, c` (counter-clockwise around its centre), a disk that
+  /// need not touch `line`; false if there is none (boundary evolution).
+  typedef unspecified_type Compute_disk_foot_time_2;
+  /// A function object: `bool operator()(Site_2 a, Site_2 b, Site_2 c, Site_2 s)`:
+  /// whether the open disk tangent to `a, b, c` (counter-clockwise; it must
+  /// exist) meets the closed segment `s` (boundary evolution: a vertex in
+  /// conflict with a new edge).
+  typedef unspecified_type Do_intersect_disk_segment_2;
 
   /// @}
 
@@ -93,5 +103,7 @@ public:
   Is_event_in_past_2 is_event_in_past_2_object() const;
   Construct_medial_disk_2 construct_medial_disk_2_object() const;
   Equal_medial_disks_2 equal_medial_disks_2_object() const;
+  Compute_disk_foot_time_2 compute_disk_foot_time_2_object() const;
+  Do_intersect_disk_segment_2 do_intersect_disk_segment_2_object() const;
   /// @}
 };

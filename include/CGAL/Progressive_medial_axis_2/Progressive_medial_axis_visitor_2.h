@@ -34,6 +34,11 @@ struct Progressive_medial_axis_statistics {
   double validation_seconds = 0;   ///< the check of the input (0 when skipped)
   double triangulation_seconds = 0;
   double merge_seconds = 0;        ///< total time spent building step 0 and in refinement steps
+  double first_step_seconds = 0;   ///< from the validated polygon to the axis of step 0 (triangulation or curve evolution included)
+  double evolution_seconds = 0;    ///< boundary evolution: the discrete curve evolution
+  std::size_t cuts = 0;            ///< boundary evolution: triangles cut out of the shape
+  std::size_t splits = 0;          ///< boundary evolution: straight vertices put back into an edge
+  std::size_t recomputed_steps = 0; ///< boundary evolution: cuts whose new cells would enclose old ones (a small hole near the cut), computed in one shot instead
   std::size_t switches = 0;        ///< switch critical points traversed
   std::size_t vanishings = 0;      ///< vanishing critical points traversed
   std::size_t anomalies = 0;       ///< events forced to keep the topology valid (0: exact decisions never force one, and the double model redoes such merges)

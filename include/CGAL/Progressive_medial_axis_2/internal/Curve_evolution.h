@@ -95,8 +95,9 @@ public:
   };
 
   /// `rings` must be a valid polygon with holes (touching rings allowed).
-  explicit Curve_evolution(const Rings<Point_2>& rings, const Kernel& kernel = Kernel())
-    : rings_(rings), orientation_(kernel.orientation_2_object())
+  /// With `fill_holes` false, a hole stops at a triangle and stays.
+  explicit Curve_evolution(const Rings<Point_2>& rings, const Kernel& kernel = Kernel(), bool fill_holes = true)
+    : rings_(rings), orientation_(kernel.orientation_2_object()), fill_holes_(fill_holes)
   {
     for(const auto& r : rings_) {
       begin_.push_back(int(x_.size()));
@@ -142,7 +143,7 @@ public:
       std::size_t removed_in_round = 0;
       for(int g = 0; g < n; ++g)
         if(alive_[std::size_t(g)] && size_[std::size_t(ring_of_[std::size_t(g)])] > 3) push(g);
-      for(int r = 1; r < int(size_.size()); ++r)
+      for(int r = 1; r < int(size_.size()) && fill_holes_; ++r)
         if(size_[std::size_t(r)] == 3) push_fill(r);
       while(!queue_.empty()) {
         const Entry e = queue_.top();
@@ -305,7 +306,7 @@ private:
     if(size_[std::size_t(r)] > 3) {
       push(u);
       push(w);
-    } else if(r > 0) {
+    } else if(r > 0 && fill_holes_) {
       push_fill(r);
     }
   }
@@ -365,6 +366,7 @@ private:
   double scale_ = 1;
   std::priority_queue<Entry> queue_;
   std::vector<Removal> removals_;
+  bool fill_holes_ = true;
   bool ran_ = false;
   std::size_t live_ = 0, grid_capacity_ = 0;
   double gx0_ = 0, gy0_ = 0, inv_cell_ = 1;

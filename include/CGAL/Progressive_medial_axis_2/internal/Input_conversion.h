@@ -151,7 +151,8 @@ void link_touching_corners(Data& data, const Orientation& orientation)
     }
     if(prev.empty()) {   // predecessors along the cycles, once
       prev.assign(std::size_t(n), -1);
-      for(int i = 0; i < n; ++i) prev[std::size_t(data.info[std::size_t(i)].next)] = i;
+      for(int i = 0; i < n; ++i)
+        if(data.info[std::size_t(i)].next >= 0) prev[std::size_t(data.info[std::size_t(i)].next)] = i;
     }
     // the edges at P: (the other end, the point at P, outgoing?), counterclockwise
     struct Ray { int to, at; bool outgoing; };

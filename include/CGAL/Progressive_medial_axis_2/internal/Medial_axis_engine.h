@@ -25,6 +25,7 @@
 
 #include <CGAL/Progressive_medial_axis_2/internal/Halfedge_structure.h>
 #include <CGAL/Progressive_medial_axis_2/internal/Merge.h>
+#include <CGAL/Progressive_medial_axis_2/internal/Medial_cut.h>
 
 #include <algorithm>
 #include <array>
@@ -99,11 +100,13 @@ public:
   /// An engine that works on a structure of its own over shared input
   /// points (a part of a divide and conquer, built by another thread).
   Medial_axis_engine(Hds& hds, const std::vector<Point_2>& points, const Traits& traits)
-    : hds_(hds), points_(points), traits_(traits), merge_(hds, points, traits)
+    : hds_(hds), points_(points), traits_(traits), merge_(hds, points, traits), cut_(hds, points, traits)
   {
     if constexpr(Has_fallback) {
       exact_merge_.reset(new Medial_merge<Fallback>(hds, points, exact_traits_));
+      exact_cut_.reset(new Medial_cut<Fallback>(hds, points, exact_traits_));
       merge_.set_strict(true);
+      cut_.set_strict(true);
     }
   }
 
@@ -207,6 +210,16 @@ public:
     }
   }
 
+  /// Cuts the triangle (u, v, w) out of the shape: `b` is the boundary
+  /// half-edge from u to w, `v` an input point inside the shape where u, v,
+  /// w turn right (Medial_cut.h).  Returns the new boundary half-edges from
+  /// u to v and from v to w.
+  std::pair<int, int> cut(int b, int v, Cut_statistics& stats) { return local_update(true, b, v, stats); }
+
+  /// Puts the input point `v` back into the boundary edge `b` (from u to w,
+  /// v inside the segment uw).  Returns the new boundary half-edges.
+  std::pair<int, int> split(int b, int v, Cut_statistics& stats) { return local_update(false, b, v, stats); }
+
   /// Computes the coordinates and radius of every vertex created since the
   /// last call that is still alive and pending.
   void resolve_pending()
@@ -223,9 +236,14 @@ public:
   // that a wrong decision on nearly degenerate input created.
   void check_new_vertices()
   {
-    Hds& hds = hds_;
-    std::vector<int> vertices = hds.pending_in_journal();
+    std::vector<int> vertices = hds_.pending_in_journal();
     merge_.for_each_switch_vertex([&](int w) { vertices.push_back(w); });
+    check_vertices(vertices);
+  }
+
+  void check_vertices(const std::vector<int>& vertices)
+  {
+    Hds& hds = hds_;
     for(int v : vertices) {
       const auto& x = static_cast<const Hds&>(hds).vertex(v);
       if(!x.alive || x.input_point != NO_INDEX || x.halfedge == NO_INDEX) continue;
@@ -276,6 +294,38 @@ public:
   }
 
 private:
+  // A cut or a split; with inexact decisions, undone and redone with exact
+  // decisions when it meets an anomaly (as a merge is).
+  std::pair<int, int> local_update(bool is_cut, int b, int v, Cut_statistics& stats)
+  {
+    if constexpr(Has_fallback) {
+      hds_.begin_journal();
+      try {
+        const std::pair<int, int> r = is_cut ? cut_.cut(b, v) : cut_.split(b, v);
+        std::vector<int> vertices = hds_.pending_in_journal();
+        vertices.insert(vertices.end(), cut_.changed_vertices().begin(), cut_.changed_vertices().end());
+        check_vertices(vertices);
+        hds_.end_journal();
+        stats = cut_.statistics();
+        return r;
+      } catch(Merge_anomaly&) {
+        hds_.rollback();
+        hds_.end_journal();
+      } catch(Uncertain_decision&) {
+        hds_.rollback();
+        hds_.end_journal();
+      }
+      const std::pair<int, int> r = is_cut ? exact_cut_->cut(b, v) : exact_cut_->split(b, v);
+      stats = exact_cut_->statistics();
+      stats.redone_exactly = true;
+      return r;
+    } else {
+      const std::pair<int, int> r = is_cut ? cut_.cut(b, v) : cut_.split(b, v);
+      stats = cut_.statistics();
+      return r;
+    }
+  }
+
   typedef typename Exact_fallback<Traits>::type Fallback;
   static constexpr bool Has_fallback = !std::is_void<Fallback>::value;
   typedef typename std::conditional<Has_fallback, Fallback, Traits>::type Fallback_traits;
@@ -287,6 +337,8 @@ private:
   Medial_merge<Traits> merge_;
   Fallback_traits exact_traits_;
   std::unique_ptr<Medial_merge<Fallback_traits> > exact_merge_;
+  Medial_cut<Traits> cut_;
+  std::unique_ptr<Medial_cut<Fallback_traits> > exact_cut_;
 };
 
 } // namespace internal

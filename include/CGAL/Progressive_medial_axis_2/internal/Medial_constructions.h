@@ -480,6 +480,27 @@ bool chord_far_end(const NT& px, const NT& py, const NT& qx, const NT& qy,
   return true;
 }
 
+/// The squared distance from the centre of `c` to the closed segment from
+/// `P` to `Q`, minus the squared radius: negative exactly when the open disk
+/// meets the segment.
+template <class NT>
+NT conflict_value(const NT& px, const NT& py, const NT& qx, const NT& qy, const Circle_nt<NT>& c)
+{
+  const NT dx = qx - px, dy = qy - py;
+  const NT vx = c.x - px, vy = c.y - py;
+  const NT f = dx * vx + dy * vy;
+  const NT r2 = c.r * c.r;
+  if(!(f > 0))
+    return vx * vx + vy * vy - r2;
+  const NT d2 = dx * dx + dy * dy;
+  if(!(f < d2)) {
+    const NT wx = c.x - qx, wy = c.y - qy;
+    return wx * wx + wy * wy - r2;
+  }
+  const NT h = cross2(dx, dy, vx, vy);
+  return (h * h - r2 * d2) / d2;
+}
+
 /// Position along the separator of the foot of the centre.
 template <class NT>
 NT foot_position(const NT& px, const NT& py, const NT& qx, const NT& qy, const Circle_nt<NT>& c)

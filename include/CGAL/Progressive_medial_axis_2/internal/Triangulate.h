@@ -65,6 +65,9 @@ inline int side_towards(const std::vector<Triangle>& triangles, int u, int t)
 /// rings touch at vertices; the interior sectors on the edge's side are less
 /// than pi, so the new point is never a reflex corner.  This costs nothing
 /// where there is no T, and needs no validation (TRUST_INPUT).
+///
+/// Points whose successor is -1 are not part of the polygon (the vertices
+/// that boundary evolution removed from its coarse shape) and are left out.
 template <class Kernel, class Data>
 std::vector<Triangle> triangulate_rings(Data& data)
 {
@@ -82,7 +85,7 @@ std::vector<Triangle> triangulate_rings(Data& data)
   std::vector<std::pair<typename K::Point_2, int> > pts;
   pts.reserve(points.size());
   for(std::size_t i = 0; i < points.size(); ++i)
-    pts.emplace_back(TK::point(points[i]), int(i));
+    if(info[i].next >= 0) pts.emplace_back(TK::point(points[i]), int(i));
   CDT cdt;
   cdt.insert(pts.begin(), pts.end());
   std::vector<Vertex_handle> handle(points.size());
@@ -92,20 +95,21 @@ std::vector<Triangle> triangulate_rings(Data& data)
   // one of them; the triangles get the corner of their sector below
   std::map<Vertex_handle, std::vector<int> > touching;
   for(std::size_t i = 0; i < points.size(); ++i)
-    if(handle[i] == Vertex_handle()) {
-      handle[i] = cdt.insert(pts[i].first);
+    if(handle[i] == Vertex_handle() && info[i].next >= 0) {
+      handle[i] = cdt.insert(TK::point(points[i]));
       std::vector<int>& at = touching[handle[i]];
       if(at.empty()) at.push_back(handle[i]->info());
       at.push_back(int(i));
     }
   const std::size_t n = points.size();
   for(std::size_t i = 0; i < n; ++i)
-    cdt.insert_constraint(handle[i], handle[std::size_t(info[i].next)]);
+    if(info[i].next >= 0) cdt.insert_constraint(handle[i], handle[std::size_t(info[i].next)]);
 
   // T's: an edge whose constraint passes through other points
   const K k;
   bool split = false;
   for(std::size_t i = 0; i < n; ++i) {
+    if(info[i].next < 0) continue;
     const Vertex_handle a = handle[i], b = handle[std::size_t(info[i].next)];
     if(cdt.is_edge(a, b)) continue;
     int last = int(i);
