@@ -56,7 +56,8 @@ const char* usage_text =
   "Computes the medial axis of each polygon of the input (WKT POLYGON, MULTIPOLYGON,\n"
   "GEOMETRYCOLLECTION; GeoJSON Polygon, MultiPolygon, GeometryCollection, Feature,\n"
   "FeatureCollection): in one shot (divide and conquer, in parallel), or for one\n"
-  "polygon progressively by region growing with --step or --frames.\n"
+  "polygon progressively (region growing, or boundary evolution with --progressive\n"
+  "boundary) with --step, --frames, --html or --progressive.\n"
   "Generator ids: e<r>.<i> is the edge from vertex i to vertex i+1 of ring r\n"
   "(ring 0 the outer ring, ring k the k-th hole), v<r>.<i> the reflex vertex i;\n"
   "with several polygons, p<k>: in front (k the polygon's index in input order).\n"
@@ -64,8 +65,12 @@ const char* usage_text =
   "options:\n"
   "  --pairs            print 'pair A B L' for every medial curve (A < B, L its length)\n"
   "  --branches         print 'branch A B C ... x y r' for every branch point\n"
-  "  --step K           stop after K merges; ids then refer to the shape of that\n"
-  "                     step, as written by --shape-out\n"
+  "  --step K           stop after K progressive steps; ids then refer to the shape\n"
+  "                     of that step, as written by --shape-out\n"
+  "  --progressive D    the progressive driver: region (region growing, the default)\n"
+  "                     or boundary (boundary evolution: the boundary simplified by\n"
+  "                     discrete curve evolution, then refined vertex by vertex); alone,\n"
+  "                     a full progressive run\n"
   "  --shape-out FILE   write the shape of the last step done (with --union, the\n"
   "                     union) as a WKT POLYGON\n"
   "  --svg FILE         draw the shape and its medial axis as SVG\n"
@@ -113,6 +118,7 @@ struct Options {
   int threads = 0;   // 0: all hardware threads
   bool prune = false, extend = false, inscribed_circle = false, repair = false;
   std::string repaired_out;
+  std::string progressive;   // "", "region" or "boundary"
   double prune_et = 0, prune_ratio = 0, tolerance = -1;
   std::string centerline, width;
 };
@@ -184,6 +190,11 @@ Options parse(int argc, char** argv)
     else if(a == "--wkt-out") o.wkt_out = value("--wkt-out");
     else if(a == "--frames-prefix") o.frames_prefix = value("--frames-prefix");
     else if(a == "--html") o.html = value("--html");
+    else if(a == "--progressive") {
+      o.progressive = value("--progressive");
+      if(o.progressive != "region" && o.progressive != "boundary")
+        usage_error("--progressive must be region or boundary, got '" + o.progressive + "'");
+    }
     else if(a == "--frames") {
       std::string v = value("--frames");
       char* end = nullptr;
@@ -221,8 +232,8 @@ Options parse(int argc, char** argv)
   if(o.input.empty()) usage_error("no input file");
   if(o.frames > 0 && o.frames_prefix.empty() && o.html.empty()) usage_error("--frames needs --frames-prefix or --html");
   if(!o.repaired_out.empty() && !o.repair) usage_error("--repaired-out needs --repair");
-  if(!o.union_with.empty() && (o.step >= 0 || o.frames > 0 || !o.html.empty() || o.repair))
-    usage_error("--union cannot be combined with --step, --frames, --html or --repair");
+  if(!o.union_with.empty() && (o.step >= 0 || o.frames > 0 || !o.html.empty() || o.repair || !o.progressive.empty()))
+    usage_error("--union cannot be combined with --step, --frames, --html, --progressive or --repair");
   if(o.repair && !pma_tool::can_repair())
     usage_error("--repair needs GEOS: this build of the tool has none (install libgeos-dev and rebuild)");
   return o;
@@ -289,6 +300,11 @@ void add_statistics(CGAL::Progressive_medial_axis_statistics& s, const CGAL::Pro
   s.parts_seconds_sum += t.parts_seconds_sum;
   s.parts_seconds_max = std::max(s.parts_seconds_max, t.parts_seconds_max);
   s.join_seconds += t.join_seconds;
+  s.first_step_seconds += t.first_step_seconds;
+  s.evolution_seconds += t.evolution_seconds;
+  s.cuts += t.cuts;
+  s.splits += t.splits;
+  s.recomputed_steps += t.recomputed_steps;
 }
 
 // One polygon of the input, its axis and what is computed from it.
@@ -335,7 +351,8 @@ void analyse(const Options& o, Polygon_job<Traits>& job)
 // taken more than a second.
 class Progress {
 public:
-  Progress(std::size_t total) : total_(total), start_(std::chrono::steady_clock::now()), tty_(isatty(2) != 0) {}
+  Progress(std::size_t total, const char* unit = "polygons")
+    : total_(total), unit_(unit), start_(std::chrono::steady_clock::now()), tty_(isatty(2) != 0) {}
   void done_one()
   {
     if(!tty_) return;
@@ -344,16 +361,18 @@ public:
     const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
     if(s < 1 || s - last_ < 0.2) return;
     last_ = s;
-    std::fprintf(stderr, "\rprogressive_medial_axis: %zu of %zu polygons, %.0f s", done_, total_, s);
+    std::fprintf(stderr, "\rprogressive_medial_axis: %zu of %zu %s, %.0f s", done_, total_, unit_, s);
     shown_ = true;
   }
   ~Progress()
   {
-    if(shown_) std::fprintf(stderr, "\rprogressive_medial_axis: %zu of %zu polygons, done%20s\n", done_, total_, "");
+    if(shown_) std::fprintf(stderr, "\rprogressive_medial_axis: %zu of %zu %s, done%20s\n", done_, total_, unit_, "");
   }
 
 private:
-  std::size_t total_, done_ = 0;
+  std::size_t total_;
+  const char* unit_;
+  std::size_t done_ = 0;
   std::chrono::steady_clock::time_point start_;
   bool tty_, shown_ = false;
   double last_ = 0;
@@ -547,9 +566,10 @@ int run(const Options& o)
     if(multi) jobs[k].prefix = "p" + std::to_string(k) + ":";
   }
 
-  const bool progressive = o.step >= 0 || o.frames > 0 || !o.html.empty();
+  const bool progressive = o.step >= 0 || o.frames > 0 || !o.html.empty() || !o.progressive.empty();
+  const bool boundary = o.progressive == "boundary";
   if(multi && (progressive || !o.shape_out.empty()))
-    usage_error("--step, --frames, --html and --shape-out need one polygon; " + o.input + " has " +
+    usage_error("--step, --frames, --html, --progressive and --shape-out need one polygon; " + o.input + " has " +
                 std::to_string(input.size()));
   std::unique_ptr<PMA> pma;
   CGAL::Progressive_medial_axes::Medial_axis_union_statistics union_stats;
@@ -602,7 +622,8 @@ int run(const Options& o)
     if constexpr(!std::is_empty<Counters>::value) counters.gather();
   } else {
     try {
-      pma.reset(new PMA(input[0].rings, Traits(), CGAL::TRUST_INPUT));
+      pma.reset(new PMA(input[0].rings, boundary ? CGAL::BOUNDARY_EVOLUTION : CGAL::REGION_GROWING, Traits(),
+                        CGAL::TRUST_INPUT));
     } catch(const CGAL::Progressive_medial_axes::Input_error& e) {
       std::cerr << o.input << ": " << e.what() << "\n";
       return 2;
@@ -645,9 +666,13 @@ int run(const Options& o)
       }
     };
     draw_frames();
-    while(pma->current_step() < last) {
-      pma->refine();
-      if(!frame_steps.empty()) draw_frames();
+    {
+      Progress progress(last - pma->current_step(), "steps");
+      while(pma->current_step() < last) {
+        pma->refine();
+        progress.done_one();
+        if(!frame_steps.empty()) draw_frames();
+      }
     }
     if(!o.html.empty()) {
       std::ofstream f = open_out(o.html);
@@ -766,7 +791,8 @@ int run(const Options& o)
     }
     std::printf("input_vertices %zu\nholes %zu\ntriangles %zu\nsteps %zu\nsteps_done %zu\n",
                 s.input_vertices, s.holes, s.triangles, steps, progressive ? pma->current_step() : steps);
-    std::printf("mode %s\nthreads %d\ntime_total %.6f\n", progressive ? "region" : "oneshot", threads, total_seconds);
+    std::printf("mode %s\nthreads %d\ntime_total %.6f\n", progressive ? (boundary ? "boundary" : "region") : "oneshot",
+                threads, total_seconds);
     std::printf("polygons %zu\n", jobs.size());
     std::printf("traits %s\n", o.traits.c_str());
     std::printf("time_read %.6f\ntime_validate %.6f\ntime_triangulate %.6f\ntime_merge %.6f\n",
@@ -774,6 +800,10 @@ int run(const Options& o)
     std::printf("switch_events %zu\nvanishing_events %zu\nanomalies %zu\nmax_n_v %zu\n",
                 s.switches, s.vanishings, s.anomalies, s.max_queue);
     std::printf("redone_merges %zu\n", s.redone_merges);
+    if(progressive) std::printf("time_first_step %.6f\n", s.first_step_seconds);
+    if(boundary)
+      std::printf("time_evolution %.6f\ncut_steps %zu\nsplit_steps %zu\nrecomputed_steps %zu\n", s.evolution_seconds,
+                  s.cuts, s.splits, s.recomputed_steps);
     if(!progressive) {
       // the task tree of the one-shot divide and conquer: its work (every
       // task, summed) and span (the longest chain of dependent tasks)
