@@ -2,9 +2,10 @@
 // with holes on an integer grid (or on the grid scaled by 1/7 and shifted, so
 // that coordinates are not exact decimals), near-degenerate on purpose:
 // repeated coordinates, collinear and cocircular vertices.  Valid polygons
-// (as validate_polygon() says) get their medial axis computed twice, in one
-// shot (divide and conquer) and by region growing to the last step; the two
-// must have the same curves (pairs of generators and lengths).  A polygon of
+// (as validate_polygon() says) get their medial axis computed three times,
+// in one shot (divide and conquer), by region growing and by boundary
+// evolution to the last step; all must have the same curves (pairs of
+// generators and lengths).  A polygon of
 // one ring is also split along the segment from its first vertex to another
 // one (chosen by the last byte); where both parts are valid, the union of
 // their two axes (medial_axis_union_2) must have the curves of the whole
@@ -126,6 +127,13 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     for(const auto& p : r) scale = std::max({scale, std::abs(p.x()), std::abs(p.y())});
   if(!same_curves(a, b, scale)) {
     print_difference("one-shot and region growing", a, b);
+    __builtin_trap();
+  }
+  CGAL::Progressive_medial_axis_2<> evolved(rings, CGAL::BOUNDARY_EVOLUTION);
+  while(evolved.refine()) {}
+  const auto e = curves(evolved.medial_axis());
+  if(!same_curves(a, e, scale)) {
+    print_difference("one-shot and boundary evolution", a, e);
     __builtin_trap();
   }
   // the union of two parts along the segment from vertex 0 to vertex k

@@ -732,6 +732,9 @@ private:
     }
     for(int i = 0; i < m; ++i) {
       hds_.face(nodes_[g[i]].face).halfedge = Hds::twin(ch[i]);
+      // a chain edge between two disks that are one (Q's cell and three
+      // consecutive generators on one circle) has length zero
+      if(same_disk(hds_.source(ch[i]), hds_.target(ch[i]))) hds_.set_zero_length(ch[i], true);
     }
     hds_.face(Qm).halfedge = ch[0];
 
