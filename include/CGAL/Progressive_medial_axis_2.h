@@ -302,18 +302,19 @@ private:
   void init(const std::vector<std::vector<Point_2> >& rings, Medial_axis_input_check check)
   {
     auto t0 = std::chrono::steady_clock::now();
+    std::vector<std::pair<int, int> > on_edges;   // the vertices inside an edge, found by the check
     if(check == CHECK_INPUT) {
-      Progressive_medial_axes::validate_polygon(rings);
+      Progressive_medial_axes::internal::validate_and_find_vertices_on_edges(rings, &on_edges);
       stats_.validation_seconds = seconds_since(t0);
     }
 
+    const auto first = std::chrono::steady_clock::now();
     data_ = std::make_shared<Data>();
     Progressive_medial_axes::internal::set_points(*data_, rings, traits_.orientation_2_object());
     stats_.input_vertices = data_->points.size();
     stats_.holes = rings.size() - 1;
 
-    const auto first = std::chrono::steady_clock::now();
-    t0 = first;
+    t0 = std::chrono::steady_clock::now();
     engine_.reset(new Engine(*data_, traits_));
     if(driver_kind_ == REGION_GROWING) {
       region_.reset(new Region_driver(*engine_));
@@ -321,7 +322,7 @@ private:
       stats_.triangulation_seconds = seconds_since(t0);
       number_of_steps_ = region_->number_of_steps();
     } else {
-      boundary_.reset(new Boundary_driver(*engine_, rings));
+      boundary_.reset(new Boundary_driver(*engine_, rings, check == CHECK_INPUT ? &on_edges : nullptr));
       stats_.evolution_seconds = seconds_since(t0);
       number_of_steps_ = boundary_->number_of_steps();
     }

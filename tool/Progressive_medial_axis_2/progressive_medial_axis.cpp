@@ -622,8 +622,10 @@ int run(const Options& o)
     if constexpr(!std::is_empty<Counters>::value) counters.gather();
   } else {
     try {
+      // (boundary evolution: the class's own check finds the vertices inside
+      // edges that the evolution keeps, outside time_first_step)
       pma.reset(new PMA(input[0].rings, boundary ? CGAL::BOUNDARY_EVOLUTION : CGAL::REGION_GROWING, Traits(),
-                        CGAL::TRUST_INPUT));
+                        boundary ? CGAL::CHECK_INPUT : CGAL::TRUST_INPUT));
     } catch(const CGAL::Progressive_medial_axes::Input_error& e) {
       std::cerr << o.input << ": " << e.what() << "\n";
       return 2;

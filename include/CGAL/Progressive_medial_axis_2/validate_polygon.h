@@ -856,16 +856,22 @@ void validate_polygon_rings(const Rings<typename Kernel::Point_2>& rings)
 
 namespace internal {
 
-// validate_polygon(), returning whether a vertex lies inside an edge (a T).
+// validate_polygon(), returning whether a vertex lies inside an edge (a T),
+// and with `on_edges`, which ones (as (ring, index) pairs).
 template <class Point_2>
-bool validate_and_find_vertices_on_edges(const Rings<Point_2>& rings)
+bool validate_and_find_vertices_on_edges(const Rings<Point_2>& rings,
+                                         std::vector<std::pair<int, int> >* on_edges = nullptr)
 {
   typedef typename Kernel_traits<Point_2>::Kernel K;
   typedef Exact_predicates_kernel_for<K> EK;
+  auto finish = [&](const auto& validator) {
+    if(on_edges) *on_edges = validator.vertices_on_edges();
+    return validator.has_vertices_on_edges();
+  };
   if constexpr(std::is_same<typename EK::type, K>::value) {
     Polygon_rings_validator<K> validator(rings, true);
     validator.run();
-    return validator.has_vertices_on_edges();
+    return finish(validator);
   } else {
     Rings<typename EK::type::Point_2> converted;
     for(const auto& r : rings) {
@@ -874,7 +880,7 @@ bool validate_and_find_vertices_on_edges(const Rings<Point_2>& rings)
     }
     Polygon_rings_validator<typename EK::type> validator(converted, true);
     validator.run();
-    return validator.has_vertices_on_edges();
+    return finish(validator);
   }
 }
 

@@ -58,11 +58,13 @@ public:
   typedef typename Kernel::Point_2 Point_2;
 
   /// Runs the curve evolution of `rings` (the polygon the engine's data was
-  /// set from, in input order).
-  Boundary_evolution(Engine& engine, const std::vector<std::vector<Point_2> >& rings)
+  /// set from, in input order); `vertices_on_edges` as the validator found
+  /// them, if it ran (else the evolution finds them).
+  Boundary_evolution(Engine& engine, const std::vector<std::vector<Point_2> >& rings,
+                     const std::vector<std::pair<int, int> >* vertices_on_edges = nullptr)
     : engine_(engine), rings_(rings)
   {
-    Curve_evolution<Kernel> evolution(rings_, Kernel(), false);
+    Curve_evolution<Kernel> evolution(rings_, Kernel(), false, vertices_on_edges);
     evolution.run();
     removals_ = evolution.removals();
     info_ = engine.data().info;

@@ -24,10 +24,9 @@
 // l1 = |uv| and l2 = |vw| divided by the total length of all rings (so that
 // K does not depend on the scale); a triangular hole has the least relevance
 // of its three vertices.  Relevances are computed in double: they
-// only order the steps.  A priority queue with lazy deletion orders them
-// (an entry is current while its vertex is alive and its neighbours have
-// not changed since it was pushed): O(n log n) for n vertices, plus the
-// validity checks.
+// only order the steps (ties by the smaller vertex index).  An indexed
+// 4-ary min-heap orders them, one entry per vertex whose key changes when
+// a neighbour goes: O(n log n) for n vertices, plus the validity checks.
 //
 // Validity.  Every shape of the evolution is a valid polygon with holes
 // (OGC): a removal never makes a ring cross or touch itself or another ring,
@@ -55,22 +54,26 @@
 // a triangle cut out of the interior of the shape of the previous step, and
 // then grows vertex by vertex like the outer ring.
 //
-// The triangle test looks for live vertices in a uniform grid rebuilt when
-// the number of live vertices halves (CGAL's spatial searching would serve,
-// but its kd-tree does not shrink with removals, and a grid on the live
-// vertices keeps a query proportional to the triangle's area).
+// The triangle test looks for live vertices in horizontal rows about two
+// edges high, each sorted by x, rebuilt when the number of live vertices
+// falls to a quarter (CGAL's spatial searching would serve, but its kd-tree
+// does not shrink with removals; a uniform grid over the bounding box puts
+// many vertices in a cell where they lie along curves, as outlines' do).  Decisions use the exact
+// orientation of Epick for a kernel of doubles.
 
 #ifndef CGAL_PROGRESSIVE_MEDIAL_AXIS_2_INTERNAL_CURVE_EVOLUTION_H
 #define CGAL_PROGRESSIVE_MEDIAL_AXIS_2_INTERNAL_CURVE_EVOLUTION_H
 
 #include <CGAL/Progressive_medial_axis_2/Input_error.h>
 #include <CGAL/Progressive_medial_axis_2/validate_polygon.h>
+#include <CGAL/Progressive_medial_axis_2/internal/Input_conversion.h>
 #include <CGAL/assertions.h>
 
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
-#include <queue>
+#include <type_traits>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -96,9 +99,14 @@ public:
 
   /// `rings` must be a valid polygon with holes (touching rings allowed).
   /// With `fill_holes` false, a hole stops at a triangle and stays.
-  explicit Curve_evolution(const Rings<Point_2>& rings, const Kernel& kernel = Kernel(), bool fill_holes = true)
-    : rings_(rings), orientation_(kernel.orientation_2_object()), fill_holes_(fill_holes)
+  /// `vertices_on_edges` lists the vertices that lie inside an edge (T's,
+  /// as (ring, index)), as the validator finds them; without it, the
+  /// validator is run here.
+  explicit Curve_evolution(const Rings<Point_2>& rings, const Kernel& kernel = Kernel(), bool fill_holes = true,
+                           const std::vector<std::pair<int, int> >* vertices_on_edges = nullptr)
+    : rings_(rings), fill_holes_(fill_holes)
   {
+    (void)kernel;
     for(const auto& r : rings_) {
       begin_.push_back(int(x_.size()));
       for(const Point_2& p : r) {
@@ -120,12 +128,24 @@ public:
     size_.resize(rings_.size());
     for(std::size_t r = 0; r < rings_.size(); ++r) size_[r] = rings_[r].size();
     alive_.assign(std::size_t(n), 1);
-    stamp_.assign(std::size_t(n), 0);
     pinned_.assign(std::size_t(n), 0);
     // the vertices inside an edge of the input stay
-    Polygon_rings_validator<Kernel> validator(rings_, true, kernel);
-    validator.run();
-    for(const auto& rv : validator.vertices_on_edges()) pinned_[std::size_t(begin_[std::size_t(rv.first)] + rv.second)] = 1;
+    auto pin = [&](const std::vector<std::pair<int, int> >& on) {
+      for(const auto& rv : on) pinned_[std::size_t(begin_[std::size_t(rv.first)] + rv.second)] = 1;
+    };
+    if(vertices_on_edges) {
+      pin(*vertices_on_edges);
+    } else {
+      typedef Exact_predicates_kernel_for<Kernel> EK;
+      Rings<typename EK::type::Point_2> exact;
+      for(const auto& r : rings_) {
+        exact.emplace_back();
+        for(const auto& p : r) exact.back().push_back(EK::point(p));
+      }
+      Polygon_rings_validator<typename EK::type> validator(exact, true);
+      validator.run();
+      pin(validator.vertices_on_edges());
+    }
     double length = 0;
     for(int g = 0; g < n; ++g) length += distance(g, next_[std::size_t(g)]);
     scale_ = length > 0 ? 1 / length : 1;
@@ -138,27 +158,38 @@ public:
     ran_ = true;
     const int n = int(x_.size());
     live_ = std::size_t(n);
+    pos_.assign(std::size_t(n) + rings_.size(), -1);
+    removals_.reserve(std::size_t(n));
     build_grid();
     for(;;) {
       std::size_t removed_in_round = 0;
+      // the queue of the round, built at once (Floyd)
+      heap_.clear();
       for(int g = 0; g < n; ++g)
-        if(alive_[std::size_t(g)] && size_[std::size_t(ring_of_[std::size_t(g)])] > 3) push(g);
+        if(alive_[std::size_t(g)] && !pinned_[std::size_t(g)] && size_[std::size_t(ring_of_[std::size_t(g)])] > 3) {
+          pos_[std::size_t(g)] = int(heap_.size());
+          heap_.push_back(Item{relevance(g), g});
+        }
       for(int r = 1; r < int(size_.size()) && fill_holes_; ++r)
-        if(size_[std::size_t(r)] == 3) push_fill(r);
-      while(!queue_.empty()) {
-        const Entry e = queue_.top();
-        queue_.pop();
-        if(e.vertex < 0) {
-          const int r = -1 - e.vertex;
+        if(size_[std::size_t(r)] == 3) {
+          pos_[std::size_t(n + r)] = int(heap_.size());
+          heap_.push_back(Item{fill_relevance(r), n + r});
+        }
+      for(std::size_t i = heap_.size() / 4 + 1; i-- > 0;)
+        if(i < heap_.size()) sift_down(i);
+      while(!heap_.empty()) {
+        const Item top = pop();
+        if(top.id >= n) {
+          const int r = top.id - n;
           if(size_[std::size_t(r)] != 3) continue;
-          fill(r, e.relevance);
+          fill(r, top.key);
           ++removed_in_round;
           continue;
         }
-        const std::size_t g = std::size_t(e.vertex);
-        if(!alive_[g] || e.stamp != stamp_[g] || size_[std::size_t(ring_of_[g])] <= 3 || !removable(e.vertex))
+        const std::size_t g = std::size_t(top.id);
+        if(!alive_[g] || size_[std::size_t(ring_of_[g])] <= 3 || !removable(top.id))
           continue;
-        remove(e.vertex, e.relevance);
+        remove(top.id, top.key);
         ++removed_in_round;
       }
       if(removed_in_round == 0) break;
@@ -189,15 +220,75 @@ public:
   }
 
 private:
-  struct Entry {
-    double relevance;
-    std::uint32_t stamp;
-    int vertex;
-    bool operator<(const Entry& o) const   // std::priority_queue pops the largest
-    {
-      return relevance != o.relevance ? relevance > o.relevance : vertex > o.vertex;
-    }
+  typedef Exact_predicates_kernel_for<Kernel> EK;
+
+  // ---- the indexed 4-ary min-heap of vertices (ids < n) and of holes to
+  // fill (id n + ring), by (relevance, id)
+  struct Item {
+    double key;
+    int id;
+    bool operator<(const Item& o) const { return key < o.key || (key == o.key && id < o.id); }
   };
+  void place(std::size_t i, const Item& it)
+  {
+    heap_[i] = it;
+    pos_[std::size_t(it.id)] = int(i);
+  }
+  void sift_up(std::size_t i)
+  {
+    const Item it = heap_[i];
+    while(i > 0) {
+      const std::size_t p = (i - 1) / 4;
+      if(!(it < heap_[p])) break;
+      place(i, heap_[p]);
+      i = p;
+    }
+    place(i, it);
+  }
+  void sift_down(std::size_t i)
+  {
+    const Item it = heap_[i];
+    const std::size_t m = heap_.size();
+    for(;;) {
+      const std::size_t c = 4 * i + 1;
+      if(c >= m) break;
+      std::size_t best = c;
+      const std::size_t e = (std::min)(c + 4, m);
+      for(std::size_t j = c + 1; j < e; ++j)
+        if(heap_[j] < heap_[best]) best = j;
+      if(!(heap_[best] < it)) break;
+      place(i, heap_[best]);
+      i = best;
+    }
+    place(i, it);
+  }
+  Item pop()
+  {
+    const Item top = heap_[0];
+    pos_[std::size_t(top.id)] = -1;
+    const Item last = heap_.back();
+    heap_.pop_back();
+    if(!heap_.empty()) {
+      place(0, last);
+      sift_down(0);
+    }
+    return top;
+  }
+  // inserts `id` with `key`, or moves it there if it is queued
+  void set_key(int id, double key)
+  {
+    const int at = pos_[std::size_t(id)];
+    if(at < 0) {
+      heap_.push_back(Item{key, id});
+      pos_[std::size_t(id)] = int(heap_.size()) - 1;
+      sift_up(heap_.size() - 1);
+      return;
+    }
+    const Item old = heap_[std::size_t(at)];
+    heap_[std::size_t(at)].key = key;
+    if(heap_[std::size_t(at)] < old) sift_up(std::size_t(at));
+    else sift_down(std::size_t(at));
+  }
 
   double distance(int a, int b) const
   {
@@ -210,22 +301,22 @@ private:
     const double ax = x_[std::size_t(g)] - x_[std::size_t(u)], ay = y_[std::size_t(g)] - y_[std::size_t(u)];
     const double bx = x_[std::size_t(w)] - x_[std::size_t(g)], by = y_[std::size_t(w)] - y_[std::size_t(g)];
     const double beta = std::fabs(std::atan2(ax * by - ay * bx, ax * bx + ay * by));
-    const double l1 = std::hypot(ax, ay) * scale_, l2 = std::hypot(bx, by) * scale_;
+    const double l1 = std::sqrt(ax * ax + ay * ay) * scale_, l2 = std::sqrt(bx * bx + by * by) * scale_;
     return l1 + l2 > 0 ? beta * l1 * l2 / (l1 + l2) : 0;
   }
 
-  void push(int g)
+  // a vertex queued again, its neighbours having changed
+  void requeue(int g)
   {
     if(pinned_[std::size_t(g)]) return;
-    queue_.push(Entry{relevance(g), ++stamp_[std::size_t(g)], g});
+    set_key(g, relevance(g));
   }
 
-  // queues the filling of hole r, a triangle
-  void push_fill(int r)
+  // the relevance of filling hole r, a triangle: the least of its vertices'
+  double fill_relevance(int r) const
   {
     const int g = first_alive(r);
-    const double k = (std::min)({relevance(g), relevance(next_[std::size_t(g)]), relevance(prev_[std::size_t(g)])});
-    queue_.push(Entry{k, 0, -1 - r});
+    return (std::min)({relevance(g), relevance(next_[std::size_t(g)]), relevance(prev_[std::size_t(g)])});
   }
 
   int first_alive(int r) const
@@ -241,7 +332,6 @@ private:
     const int a = first_alive(r), b = next_[std::size_t(a)], c = next_[std::size_t(b)];
     for(int g : {a, b, c}) {
       alive_[std::size_t(g)] = 0;
-      grid_erase(g);
       --live_;
     }
     size_[std::size_t(r)] = 0;
@@ -254,41 +344,84 @@ private:
     return rings_[std::size_t(r)][std::size_t(g - begin_[std::size_t(r)])];
   }
 
-  // whether p lies in the closed triangle (a, b, c), of orientation o
-  bool in_closed_triangle(const Point_2& p, const Point_2& a, const Point_2& b, const Point_2& c, Orientation o) const
+  Orientation orientation(const Point_2& a, const Point_2& b, const Point_2& c) const
+  {
+    return typename EK::type().orientation_2_object()(EK::point(a), EK::point(b), EK::point(c));
+  }
+  // the same on vertices (for a kernel of doubles, from the copies of their
+  // coordinates, without reading the input's points)
+  Orientation orientation(int a, int b, int c) const
+  {
+    if constexpr(std::is_floating_point<typename Kernel::FT>::value) {
+      typedef typename EK::type::Point_2 P;
+      return typename EK::type().orientation_2_object()(P(x_[std::size_t(a)], y_[std::size_t(a)]),
+                                                        P(x_[std::size_t(b)], y_[std::size_t(b)]),
+                                                        P(x_[std::size_t(c)], y_[std::size_t(c)]));
+    } else {
+      return orientation(point(a), point(b), point(c));
+    }
+  }
+
+  // whether vertex p lies in the closed triangle of vertices (a, b, c), of orientation o
+  bool in_closed_triangle(int p, int a, int b, int c, Orientation o) const
   {
     if(o == COLLINEAR) {
       // the triangle is the segment (a, c), b between them
-      if(orientation_(a, c, p) != COLLINEAR) return false;
-      const Point_2& lo = (std::min)(a, c, [](const Point_2& s, const Point_2& t) { return CGAL::compare_xy(s, t) == SMALLER; });
-      const Point_2& hi = (std::max)(a, c, [](const Point_2& s, const Point_2& t) { return CGAL::compare_xy(s, t) == SMALLER; });
-      return CGAL::compare_xy(lo, p) != LARGER && CGAL::compare_xy(p, hi) != LARGER;
+      if(orientation(a, c, p) != COLLINEAR) return false;
+      const Point_2 &pa = point(a), &pc = point(c), &pp = point(p);
+      const Point_2& lo = (std::min)(pa, pc, [](const Point_2& s, const Point_2& t) { return CGAL::compare_xy(s, t) == SMALLER; });
+      const Point_2& hi = (std::max)(pa, pc, [](const Point_2& s, const Point_2& t) { return CGAL::compare_xy(s, t) == SMALLER; });
+      return CGAL::compare_xy(lo, pp) != LARGER && CGAL::compare_xy(pp, hi) != LARGER;
     }
-    return orientation_(a, b, p) != -o && orientation_(b, c, p) != -o && orientation_(c, a, p) != -o;
+    return orientation(a, b, p) != -o && orientation(b, c, p) != -o && orientation(c, a, p) != -o;
   }
 
   bool removable(int v) const
   {
     const int u = prev_[std::size_t(v)], w = next_[std::size_t(v)];
     if(pinned_[std::size_t(u)] || pinned_[std::size_t(v)] || pinned_[std::size_t(w)]) return false;
-    const Point_2 &pu = point(u), &pv = point(v), &pw = point(w);
-    const Orientation o = orientation_(pu, pv, pw);
-    if(size_[std::size_t(ring_of_[std::size_t(v)])] == 4 && orientation_(pu, pw, point(next_[std::size_t(w)])) == COLLINEAR)
+    const Orientation o = orientation(u, v, w);
+    if(size_[std::size_t(ring_of_[std::size_t(v)])] == 4 && orientation(u, w, next_[std::size_t(w)]) == COLLINEAR)
       return false;
     // live vertices in the triangle's bounding box
     const double x0 = (std::min)({x_[std::size_t(u)], x_[std::size_t(v)], x_[std::size_t(w)]});
     const double x1 = (std::max)({x_[std::size_t(u)], x_[std::size_t(v)], x_[std::size_t(w)]});
     const double y0 = (std::min)({y_[std::size_t(u)], y_[std::size_t(v)], y_[std::size_t(w)]});
     const double y1 = (std::max)({y_[std::size_t(u)], y_[std::size_t(v)], y_[std::size_t(w)]});
-    const int i0 = cell_x(x0), i1 = cell_x(x1), j0 = cell_y(y0), j1 = cell_y(y1);
-    for(int j = j0; j <= j1; ++j)
-      for(int i = i0; i <= i1; ++i)
-        for(int g : grid_[std::size_t(j) * std::size_t(nx_) + std::size_t(i)]) {
-          if(g == u || g == v || g == w) continue;
-          const double px = x_[std::size_t(g)], py = y_[std::size_t(g)];
-          if(px < x0 || px > x1 || py < y0 || py > y1) continue;
-          if(in_closed_triangle(point(g), pu, pv, pw, o)) return false;
-        }
+    const int j0 = row_of(y0), j1 = row_of(y1);
+    const double tx[3] = {x_[std::size_t(u)], x_[std::size_t(v)], x_[std::size_t(w)]};
+    const double ty[3] = {y_[std::size_t(u)], y_[std::size_t(v)], y_[std::size_t(w)]};
+    const double dy = 1e-6 * row_height_ + 1e-14 * (std::fabs(y0) + std::fabs(y1));
+    const double slack = 1e-6 * row_height_ + 1e-14 * (std::fabs(x0) + std::fabs(x1));
+    for(int j = j0; j <= j1; ++j) {
+      // the triangle's x-range within the row's band, both a little wider
+      // (rows are found in double; the test itself is exact)
+      const double b0 = (std::max)(y0, gy0_ + double(j) * row_height_ - dy);
+      const double b1 = (std::min)(y1, gy0_ + double(j + 1) * row_height_ + dy);
+      double lo = HUGE_VAL, hi = -HUGE_VAL;
+      for(int e = 0; e < 3; ++e) {
+        const double ax = tx[e], ay = ty[e], bx = tx[(e + 1) % 3], by = ty[(e + 1) % 3];
+        if(ay >= b0 && ay <= b1) { lo = (std::min)(lo, ax); hi = (std::max)(hi, ax); }
+        for(double yb : {b0, b1})
+          if((ay - yb) * (by - yb) <= 0 && ay != by) {
+            const double xb = ax + (bx - ax) * ((yb - ay) / (by - ay));
+            lo = (std::min)(lo, xb);
+            hi = (std::max)(hi, xb);
+          }
+      }
+      if(lo > hi) { lo = x0; hi = x1; }
+      lo -= slack;
+      hi += slack;
+      const Grid_entry* first = grid_.data() + row_start_[std::size_t(j)];
+      const Grid_entry* last = grid_.data() + row_start_[std::size_t(j) + 1];
+      const Grid_entry* it = std::lower_bound(first, last, lo, [](const Grid_entry& e, double x) { return e.x < x; });
+      for(; it != last && it->x <= hi; ++it) {
+        if(it->y < y0 || it->y > y1) continue;
+        const int g = it->g;
+        if(g == u || g == v || g == w || !alive_[std::size_t(g)]) continue;
+        if(in_closed_triangle(g, u, v, w, o)) return false;
+      }
+    }
     return true;
   }
 
@@ -301,78 +434,78 @@ private:
     next_[std::size_t(u)] = w;
     prev_[std::size_t(w)] = u;
     --size_[std::size_t(r)];
-    grid_erase(v);
     if(--live_ * 4 < grid_capacity_) build_grid();
     if(size_[std::size_t(r)] > 3) {
-      push(u);
-      push(w);
+      requeue(u);
+      requeue(w);
     } else if(r > 0 && fill_holes_) {
-      push_fill(r);
+      set_key(int(x_.size()) + r, fill_relevance(r));
     }
   }
 
-  // ---- the grid of live vertices
-  int cell_x(double x) const { return std::clamp(int((x - gx0_) * inv_cell_), 0, nx_ - 1); }
-  int cell_y(double y) const { return std::clamp(int((y - gy0_) * inv_cell_), 0, ny_ - 1); }
+  // ---- the live vertices in horizontal rows about two edges high, each
+  // row sorted by x (a query scans the triangle's x-range in each row it
+  // crosses); dead vertices are skipped until the next rebuild.  The row
+  // height follows the live edges' mean length, so that a row holds few
+  // vertices where they lie along curves.
+  int row_of(double y) const { return std::clamp(int((y - gy0_) / row_height_), 0, rows_ - 1); }
 
   void build_grid()
   {
-    double x0 = HUGE_VAL, x1 = -HUGE_VAL, y0 = HUGE_VAL, y1 = -HUGE_VAL;
+    double y0 = HUGE_VAL, y1 = -HUGE_VAL, length = 0;
     std::size_t count = 0;
     for(std::size_t g = 0; g < x_.size(); ++g)
       if(alive_[g]) {
-        x0 = (std::min)(x0, x_[g]); x1 = (std::max)(x1, x_[g]);
-        y0 = (std::min)(y0, y_[g]); y1 = (std::max)(y1, y_[g]);
+        y0 = (std::min)(y0, y_[g]);
+        y1 = (std::max)(y1, y_[g]);
+        length += distance(int(g), next_[g]);
         ++count;
       }
-    // about two vertices per cell
-    const double w = (std::max)(x1 - x0, 1e-300), h = (std::max)(y1 - y0, 1e-300);
-    const double cell = (std::max)(std::sqrt(w * h * 2 / double((std::max)(count, std::size_t(1)))), (std::max)(w, h) / 4096);
-    gx0_ = x0;
+    const double h = (std::max)(y1 - y0, 1e-300);
+    const double mean = count > 0 ? length / double(count) : h;
     gy0_ = y0;
-    inv_cell_ = 1 / cell;
-    nx_ = (std::max)(1, (std::min)(4096, int(w / cell) + 1));
-    ny_ = (std::max)(1, (std::min)(4096, int(h / cell) + 1));
-    grid_.assign(std::size_t(nx_) * std::size_t(ny_), std::vector<int>());
-    slot_.assign(x_.size(), -1);
+    rows_ = int((std::min)(double(4 * count + 1), (std::min)(1e7, h / (std::max)(2 * mean, h * 1e-7)))) + 1;
+    row_height_ = h / double(rows_);
+    if(!(row_height_ > 0)) row_height_ = 1;
+    row_start_.assign(std::size_t(rows_) + 1, 0);
+    row_.resize(x_.size());
     for(std::size_t g = 0; g < x_.size(); ++g)
       if(alive_[g]) {
-        std::vector<int>& c = grid_[cell_of(int(g))];
-        slot_[g] = int(c.size());
-        c.push_back(int(g));
+        row_[g] = row_of(y_[g]);
+        ++row_start_[std::size_t(row_[g]) + 1];
       }
+    for(int r = 0; r < rows_; ++r) row_start_[std::size_t(r) + 1] += row_start_[std::size_t(r)];
+    grid_.resize(count);
+    std::vector<std::size_t> fill(row_start_.begin(), row_start_.end() - 1);
+    for(std::size_t g = 0; g < x_.size(); ++g)
+      if(alive_[g]) grid_[fill[std::size_t(row_[g])]++] = Grid_entry{x_[g], y_[g], int(g)};
+    for(int r = 0; r < rows_; ++r)
+      std::sort(grid_.begin() + std::ptrdiff_t(row_start_[std::size_t(r)]), grid_.begin() + std::ptrdiff_t(row_start_[std::size_t(r) + 1]),
+                [](const Grid_entry& a, const Grid_entry& b) { return a.x < b.x; });
     grid_capacity_ = count;
-  }
-  std::size_t cell_of(int g) const
-  {
-    return std::size_t(cell_y(y_[std::size_t(g)])) * std::size_t(nx_) + std::size_t(cell_x(x_[std::size_t(g)]));
-  }
-  void grid_erase(int g)
-  {
-    std::vector<int>& c = grid_[cell_of(g)];
-    const int s = slot_[std::size_t(g)];
-    c[std::size_t(s)] = c.back();
-    slot_[std::size_t(c.back())] = s;
-    c.pop_back();
   }
 
   const Rings<Point_2>& rings_;
-  typename Kernel::Orientation_2 orientation_;
   std::vector<int> begin_, ring_of_, prev_, next_;
   std::vector<std::size_t> size_;
   std::vector<double> x_, y_;
   std::vector<char> alive_, pinned_;
-  std::vector<std::uint32_t> stamp_;
   double scale_ = 1;
-  std::priority_queue<Entry> queue_;
+  std::vector<Item> heap_;
+  std::vector<int> pos_;   // the place of each vertex (and hole) in the heap, or -1
   std::vector<Removal> removals_;
   bool fill_holes_ = true;
   bool ran_ = false;
   std::size_t live_ = 0, grid_capacity_ = 0;
-  double gx0_ = 0, gy0_ = 0, inv_cell_ = 1;
-  int nx_ = 1, ny_ = 1;
-  std::vector<std::vector<int> > grid_;
-  std::vector<int> slot_;
+  double gy0_ = 0, row_height_ = 1;
+  int rows_ = 1;
+  struct Grid_entry {
+    double x, y;
+    int g;
+  };
+  std::vector<std::size_t> row_start_;
+  std::vector<int> row_;
+  std::vector<Grid_entry> grid_;
 };
 
 } // namespace internal
