@@ -1,24 +1,33 @@
 #!/usr/bin/env bash
 # Compares the tool's --pairs with the oracle program sdg_pairs on polygon
 # files, for the full shape and at several --step values (fractions of the
-# step count).  Usage: scripts/check_oracle.sh [--traits T] FILE.wkt...
+# step count).  Usage: scripts/check_oracle.sh [--traits T] [--progressive D] FILE.wkt...
+# (--progressive boundary: the steps, and the full run, of boundary evolution)
 # Needs a build with tests (scripts/test.sh, or cmake --build build).
 set -uo pipefail
 cd "$(dirname "$0")/.."
 traits=filtered
-if [ "${1:-}" = "--traits" ]; then traits=$2; shift 2; fi
+driver=region
+while [ $# -gt 0 ]; do
+  case "$1" in
+    --traits) traits=$2; shift 2 ;;
+    --progressive) driver=$2; shift 2 ;;
+    *) break ;;
+  esac
+done
 tool=build/tool/Progressive_medial_axis_2/progressive_medial_axis
 oracle=build/test/Progressive_medial_axis_2/sdg_pairs
 compare=build/test/Progressive_medial_axis_2/compare_pairs
 tmp=$(mktemp -d)
 status=0
 for f in "$@"; do
-  steps=$($tool --stats --step 0 "$f" | awk '$1=="steps"{print $2}')
+  steps=$($tool --stats --step 0 --progressive $driver "$f" | awk '$1=="steps"{print $2}')
   for k in full 1 10 $((steps/10)) $((steps/3)) $((2*steps/3)) $((steps-1)); do
     if [ "$k" = full ]; then
-      $tool --traits $traits --pairs "$f" > $tmp/ours.txt; shape=$f
+      progressive=""; [ $driver = region ] || progressive="--progressive $driver"
+      $tool --traits $traits --pairs $progressive "$f" > $tmp/ours.txt; shape=$f
     else
-      $tool --traits $traits --pairs --step $k --shape-out $tmp/shape.wkt "$f" > $tmp/ours.txt; shape=$tmp/shape.wkt
+      $tool --traits $traits --pairs --progressive $driver --step $k --shape-out $tmp/shape.wkt "$f" > $tmp/ours.txt; shape=$tmp/shape.wkt
     fi
     $oracle "$shape" > $tmp/oracle.txt
     result=$($compare "$shape" $tmp/ours.txt $tmp/oracle.txt) || status=1

@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
-# Builds the package and runs its main job: a region-growing progressive
-# medial axis of a shape shipped with the project, drawn at several steps.
+# Builds the package and runs its main job: a progressive medial axis of a
+# shape shipped with the project, drawn at several steps, by region growing
+# and by boundary evolution.
 # Pictures and data go to out/.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -13,5 +14,8 @@ build/tool/Progressive_medial_axis_2/progressive_medial_axis --stats \
   --frames 8 --frames-prefix out/maze20_step --html out/maze20_viewer.html \
   --svg out/maze20_axis.svg --geojson out/maze20_axis.geojson --wkt-out out/maze20_axis.wkt \
   "$shape"
-echo "pictures: out/maze20_step_000.svg ... out/maze20_step_007.svg (progressive), out/maze20_axis.svg (final)"
-echo "viewer: out/maze20_viewer.html (open it in a browser: a slider over the steps, pan and zoom)"
+build/tool/Progressive_medial_axis_2/progressive_medial_axis --progressive boundary \
+  --frames 8 --frames-prefix out/maze20_boundary_step --html out/maze20_boundary_viewer.html "$shape"
+echo "pictures: out/maze20_step_000.svg ... out/maze20_step_007.svg (region growing), out/maze20_axis.svg (final)"
+echo "          out/maze20_boundary_step_000.svg ... _007.svg (boundary evolution)"
+echo "viewers: out/maze20_viewer.html, out/maze20_boundary_viewer.html (open them in a browser: a slider over the steps, pan and zoom)"

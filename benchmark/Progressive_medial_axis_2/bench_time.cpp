@@ -13,7 +13,11 @@
 //   pma_epick         the full progressive sequence with the double-precision traits
 //   pma_exact         the same with the CORE::Expr traits (Simple_cartesian<CORE::Expr>)
 //   pma_evolution     the discrete curve evolution alone (the simplification of
-//                     the boundary-evolved mode; its refinement is not built yet)
+//                     the boundary-evolved mode)
+//   pma_boundary      the full boundary-evolved progressive sequence (curve evolution,
+//                     step 0, every refinement step), filtered traits; the note has
+//                     the evolution's time, the refinement's (after step 0), the
+//                     time to step 0 and the merge, cut and split counts
 //   sdg               Segment_Delaunay_graph_2, filtered traits without intersections
 //                     over Simple_cartesian<double> (construction of the diagram)
 //   sdg_hierarchy     the same with Segment_Delaunay_graph_hierarchy_2
@@ -51,7 +55,8 @@
 // live vanishing candidates of a merge) as n_v:count.
 //
 // --nv-dump DIR: for pma_filtered, writes DIR/<shape>.nv.txt, one line "step n_v" per
-// refinement step (step 1 is the first merge).
+// refinement step (step 1 is the first merge); for pma_boundary DIR/<shape>.boundary.nv.txt
+// (n_v 0 for a cut or a split).
 
 #include <CGAL/Progressive_medial_axis_2.h>
 #include <CGAL/Progressive_medial_axis_2/internal/Curve_evolution.h>
@@ -86,7 +91,8 @@ struct Options {
 // ---- receives a second time (sdg_extract: the construction of the diagram)
 
 template <class Traits>
-double run_pma(const Rings& rings, std::string& note, const std::string& nv_dump_file)
+double run_pma(const Rings& rings, std::string& note, const std::string& nv_dump_file,
+               CGAL::Progressive_medial_axis_driver driver = CGAL::REGION_GROWING)
 {
   typedef CGAL::Progressive_medial_axis_2<Traits> PMA;
   // records n_v of every step
@@ -95,7 +101,8 @@ double run_pma(const Rings& rings, std::string& note, const std::string& nv_dump
     void on_step(std::size_t, std::size_t n_v) { queue_per_step.push_back(std::uint32_t(n_v)); }
   } recorder;
   double t0 = now();
-  PMA pma(rings);
+  PMA pma(rings, driver);
+  const double step0 = now() - t0;
   pma.refine_all(recorder);
   // the vertices are resolved when the axis is read: read them all
   double checksum = 0;
@@ -106,7 +113,12 @@ double run_pma(const Rings& rings, std::string& note, const std::string& nv_dump
   for(std::uint32_t v : recorder.queue_per_step) ++hist[v];
   std::ostringstream o;
   if(!(checksum >= 0)) o << "bad radius;";
-  o << "edges=" << pma.medial_axis().number_of_edges() << ";nv_max=" << s.max_queue << ";nv_hist=";
+  o << "edges=" << pma.medial_axis().number_of_edges() << ";first_step=" << s.first_step_seconds
+    << ";until_step0=" << step0 << ";steps=" << pma.number_of_steps() << ";merges=" << s.merges;
+  if(driver == CGAL::BOUNDARY_EVOLUTION)
+    o << ";evolution=" << s.evolution_seconds << ";refinement=" << (t - step0) << ";cuts=" << s.cuts
+      << ";splits=" << s.splits << ";recomputed=" << s.recomputed_steps;
+  o << ";nv_max=" << s.max_queue << ";nv_hist=";
   bool first = true;
   for(const auto& kv : hist) {
     o << (first ? "" : ",") << kv.first << ":" << kv.second;
@@ -230,6 +242,10 @@ double run_method(const std::string& m, const Rings& rings, std::string& note, d
   if(m == "pma_oneshot_1") return run_oneshot(rings, note, 1);
   if(m == "pma_oneshot_2") return run_oneshot(rings, note, 2);
   if(m == "pma_evolution") return run_evolution(rings, note);
+  if(m == "pma_boundary")
+    return run_pma<CGAL::Progressive_medial_axis_traits_2<CGAL::Epick> >(
+      rings, note, nv_dump_file.empty() ? "" : nv_dump_file.substr(0, nv_dump_file.size() - 7) + ".boundary.nv.txt",
+      CGAL::BOUNDARY_EVOLUTION);
   if(m == "sdg") return run_sdg<Sdg>(rings, note);
   if(m == "sdg_hierarchy") return run_sdg<Sdg_hierarchy>(rings, note);
   if(m == "sdg_extract") return run_sdg_extract(rings, note, aux);
@@ -238,7 +254,7 @@ double run_method(const std::string& m, const Rings& rings, std::string& note, d
   throw std::runtime_error("unknown method " + m);
 }
 
-const std::vector<std::string> all_methods = {"pma_filtered", "pma_oneshot_1", "pma_oneshot_2", "pma_epick", "pma_exact", "pma_evolution", "sdg",
+const std::vector<std::string> all_methods = {"pma_filtered", "pma_oneshot_1", "pma_oneshot_2", "pma_epick", "pma_exact", "pma_evolution", "pma_boundary", "sdg",
                                               "sdg_hierarchy", "sdg_extract", "sdg_exact", "boost_voronoi"};
 
 struct Measure {
@@ -354,7 +370,7 @@ int main(int argc, char** argv)
       double rss = 0;
       for(int k = 0; k < runs; ++k) {
         const std::string dump =
-          (m == "pma_filtered" && k == 0 && !nv_dump_dir.empty()) ? nv_dump_dir + "/" + shape + ".nv.txt" : "";
+          ((m == "pma_filtered" || m == "pma_boundary") && k == 0 && !nv_dump_dir.empty()) ? nv_dump_dir + "/" + shape + ".nv.txt" : "";
         last = measure(m, rings, limit, dump);
         rss = std::max(rss, last.rss_mb);
         if(!last.ok) {

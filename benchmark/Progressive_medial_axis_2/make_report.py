@@ -201,8 +201,9 @@ def plot_time(rows, plots_dir):
     return name
 
 
-def plot_nv(results, shape, plots_dir):
-    path = os.path.join(results, "nv", shape + ".nv.txt")
+def plot_nv(results, shape, plots_dir, kind=""):
+    """kind: "" (region growing) or ".boundary" (boundary evolution)"""
+    path = os.path.join(results, "nv", shape + kind + ".nv.txt")
     if not os.path.exists(path):
         return None
     pts = []
@@ -213,7 +214,7 @@ def plot_nv(results, shape, plots_dir):
                 pts.append((float(p[0]), float(p[1])))
     if not pts:
         return None
-    title = "n_v per step: " + shape
+    title = "n_v per step: " + shape + (" (boundary evolution)" if kind else "")
     label = "n_v"
     if len(pts) > 3000:
         # many steps: the largest n_v of each run of w consecutive steps
@@ -226,7 +227,7 @@ def plot_nv(results, shape, plots_dir):
              "refinement step", "n_v (largest priority queue of the merge)", title)
     ax_series = [(label, pts, "points")]
     svg = ax.svg(ax_series).replace('r="2.5"', 'r="1"')
-    name = "nv_%s.svg" % shape
+    name = "nv%s_%s.svg" % (kind.replace(".", "_"), shape)
     write(os.path.join(plots_dir, name), svg)
     return name
 
@@ -387,8 +388,8 @@ def main():
 
     # n_v
     nv_lines = []
-    for s in order:
-        path = os.path.join(results, "nv", s + ".nv.txt")
+    for s, kind in [(s, k) for s in order for k in ("", ".boundary")]:
+        path = os.path.join(results, "nv", s + kind + ".nv.txt")
         if not os.path.exists(path):
             continue
         vals = [int(l.split()[1]) for l in open(path) if len(l.split()) >= 2]
@@ -400,20 +401,21 @@ def main():
         hist = {}
         for v in vals:
             hist[v] = hist.get(v, 0) + 1
-        nv_lines.append("| %s | %d | %d | %d | %d | %d | %s |" % (
-            s, len(vals), vals_sorted[-1], pct(0.5), pct(0.99), pct(0.999),
+        nv_lines.append("| %s | %s | %d | %d | %d | %d | %d | %s |" % (
+            s, "boundary" if kind else "region", len(vals), vals_sorted[-1], pct(0.5), pct(0.99), pct(0.999),
             ", ".join("%d:%d" % (k, hist[k]) for k in sorted(hist))))
-        plot_nv(results, s, plots_dir)
+        plot_nv(results, s, plots_dir, kind)
     if nv_lines:
         lines += ["## n_v", "",
                   "n_v is the largest number of live vanishing candidates in the priority queue of a merge "
-                  "(paper, Theorem 1 and Figs. 17 and 20), per refinement step of the progressive run "
-                  "(filtered traits).", "",
-                  "| shape | steps | max | median | 99% | 99.9% | distribution (n_v:steps) |",
-                  "|---|---:|---:|---:|---:|---:|---|"] + nv_lines + [""]
+                  "(paper, Theorem 1 and Figs. 17 and 20), per refinement step of the progressive runs "
+                  "(filtered traits): region growing, and boundary evolution (a cut or a split counts 0).", "",
+                  "| shape | driver | steps | max | median | 99% | 99.9% | distribution (n_v:steps) |",
+                  "|---|---|---:|---:|---:|---:|---:|---|"] + nv_lines + [""]
         for s in order:
-            if os.path.exists(os.path.join(plots_dir, "nv_%s.svg" % s)):
-                lines.append("![n_v per step, %s](%s/nv_%s.svg)" % (s, rel, s))
+            for kind in ("", "_boundary"):
+                if os.path.exists(os.path.join(plots_dir, "nv%s_%s.svg" % (kind, s))):
+                    lines.append("![n_v per step%s, %s](%s/nv%s_%s.svg)" % (kind.replace("_", ", "), s, rel, kind, s))
         lines.append("")
 
     out = os.path.join(HERE, "RESULTS.md")

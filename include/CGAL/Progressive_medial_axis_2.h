@@ -363,31 +363,6 @@ private:
 namespace Progressive_medial_axes {
 namespace internal {
 
-// The counters of the stages of a filtered traits are per thread: the
-// counts of a part built by another thread are added to the caller's.
-template <class Traits, class = void>
-struct Thread_counters {
-  template <class F>
-  static void run_counted(std::thread::id, std::mutex&, const F& f) { f(); }
-};
-template <class Traits>
-struct Thread_counters<Traits, std::void_t<decltype(Traits::filter_statistics())> > {
-  typedef typename std::remove_reference<decltype(Traits::filter_statistics())>::type Counters;
-  Counters others;   // what other threads counted
-  template <class F>
-  void run_counted(std::thread::id caller, std::mutex& m, const F& f)
-  {
-    const Counters before = Traits::filter_statistics();
-    f();
-    if(std::this_thread::get_id() == caller)
-      return;
-    const Counters after = Traits::filter_statistics();
-    std::lock_guard<std::mutex> lock(m);
-    others.add_difference(after, before);
-  }
-  void gather() { Traits::filter_statistics().add_difference(others, Counters()); }
-};
-
 template <class Traits>
 Medial_axis_2<typename Traits::Kernel>
 one_shot_medial_axis(const std::vector<std::vector<typename Traits::Kernel::Point_2> >& rings, const Traits& traits,
@@ -417,28 +392,9 @@ one_shot_medial_axis(const std::vector<std::vector<typename Traits::Kernel::Poin
   stats.triangulation_seconds = seconds_since(t0);
 
   t0 = std::chrono::steady_clock::now();
-  // Parts run in parallel only on a kernel of doubles (Epick, or
-  // Simple_cartesian<double>): the number types of exact kernels (CORE::Expr,
-  // the lazy numbers of Epeck) share state between threads in CGAL 5.5.
-  const bool parallel = std::is_floating_point<typename Kernel::FT>::value;
-  if(parts == 0) {
-    parts = 1;
-#ifdef CGAL_PMA2_USE_TBB
-    // a few parts per thread, so that the threads stay busy to the end
-    const int threads = tbb::this_task_arena::max_concurrency();
-    if(threads > 1 && parallel) parts = 4 * std::size_t(threads);
-#endif
-  }
   data->hds.reserve(2 * data->points.size() + 16, 4 * data->points.size() + 16);
   Engine engine(*data, traits);
-  Divide_and_conquer<Traits> driver(engine, std::move(triangles));
-  Thread_counters<Traits> counters;
-  std::mutex mutex;
-  const std::thread::id caller = std::this_thread::get_id();
-  const Divide_and_conquer_counts counts =
-    driver.run(parts, parallel, [&](const auto& task) { counters.run_counted(caller, mutex, task); });
-  if constexpr(!std::is_empty<Thread_counters<Traits> >::value)
-    counters.gather();
+  const Divide_and_conquer_counts counts = divide_and_conquer(engine, std::move(triangles), parts);
   stats.merge_seconds = seconds_since(t0);
   stats.merges = counts.merges;
   stats.switches = counts.switches;

@@ -623,9 +623,12 @@ int run(const Options& o)
   } else {
     try {
       // (boundary evolution: the class's own check finds the vertices inside
-      // edges that the evolution keeps, outside time_first_step)
-      pma.reset(new PMA(input[0].rings, boundary ? CGAL::BOUNDARY_EVOLUTION : CGAL::REGION_GROWING, Traits(),
-                        boundary ? CGAL::CHECK_INPUT : CGAL::TRUST_INPUT));
+      // edges that the evolution keeps, outside time_first_step; its step 0
+      // is a one-shot on the --threads threads)
+      in_arena([&]() {
+        pma.reset(new PMA(input[0].rings, boundary ? CGAL::BOUNDARY_EVOLUTION : CGAL::REGION_GROWING, Traits(),
+                          boundary ? CGAL::CHECK_INPUT : CGAL::TRUST_INPUT));
+      });
     } catch(const CGAL::Progressive_medial_axes::Input_error& e) {
       std::cerr << o.input << ": " << e.what() << "\n";
       return 2;
@@ -668,14 +671,14 @@ int run(const Options& o)
       }
     };
     draw_frames();
-    {
+    in_arena([&]() {   // (a recomputed step of boundary evolution is a one-shot)
       Progress progress(last - pma->current_step(), "steps");
       while(pma->current_step() < last) {
         pma->refine();
         progress.done_one();
         if(!frame_steps.empty()) draw_frames();
       }
-    }
+    });
     if(!o.html.empty()) {
       std::ofstream f = open_out(o.html);
       const std::string name = o.input.substr(o.input.find_last_of('/') == std::string::npos ? 0 : o.input.find_last_of('/') + 1);

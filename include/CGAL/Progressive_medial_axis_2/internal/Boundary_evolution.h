@@ -29,7 +29,8 @@
 // where the holes block it.
 //
 // The axis of the coarsest shape is computed by the one-shot divide and
-// conquer over a constrained Delaunay triangulation of that shape; so is the
+// conquer over a constrained Delaunay triangulation of that shape (in
+// parallel with oneTBB, on the threads of the current task arena); so is the
 // axis of a step whose cut is not local (the new cells would surround the
 // cells of a small hole, see Medial_cut.h), which is rare.
 
@@ -161,8 +162,7 @@ private:
     // at a T (those places are never evolved: the same in both)
     for(std::size_t g = 0; g < n; ++g)
       if(data.info[g].next == coarse_next[g]) data.info[g] = info_[g];
-    Divide_and_conquer<Traits> dc(engine_, std::move(triangles));
-    const Divide_and_conquer_counts counts = dc.run(1, false, [](const auto& task) { task(); });
+    const Divide_and_conquer_counts counts = divide_and_conquer(engine_, std::move(triangles));
     // the boundary half-edge leaving each corner
     const auto& hds = engine_.hds();
     out_.assign(data.points.size(), NO_INDEX);

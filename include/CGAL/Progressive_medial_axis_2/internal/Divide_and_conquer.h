@@ -62,6 +62,7 @@
 #if defined(CGAL_LINKED_WITH_TBB) && !defined(CGAL_PMA2_NO_TBB)
 #define CGAL_PMA2_USE_TBB 1
 #include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
 #endif
 
 #include <algorithm>
@@ -69,10 +70,38 @@
 #include <chrono>
 #include <cstddef>
 #include <vector>
+#include <mutex>
+#include <thread>
+#include <type_traits>
 
 namespace CGAL {
 namespace Progressive_medial_axes {
 namespace internal {
+
+// The counters of the stages of a filtered traits are per thread: the
+// counts of a part built by another thread are added to the caller's.
+template <class Traits, class = void>
+struct Thread_counters {
+  template <class F>
+  static void run_counted(std::thread::id, std::mutex&, const F& f) { f(); }
+};
+template <class Traits>
+struct Thread_counters<Traits, std::void_t<decltype(Traits::filter_statistics())> > {
+  typedef typename std::remove_reference<decltype(Traits::filter_statistics())>::type Counters;
+  Counters others;   // what other threads counted
+  template <class F>
+  void run_counted(std::thread::id caller, std::mutex& m, const F& f)
+  {
+    const Counters before = Traits::filter_statistics();
+    f();
+    if(std::this_thread::get_id() == caller)
+      return;
+    const Counters after = Traits::filter_statistics();
+    std::lock_guard<std::mutex> lock(m);
+    others.add_difference(after, before);
+  }
+  void gather() { Traits::filter_statistics().add_difference(others, Counters()); }
+};
 
 /// Counts of the merges of a divide and conquer (or of a part of it).
 struct Divide_and_conquer_counts {
@@ -310,6 +339,37 @@ private:
   std::vector<std::array<int, 3> > sides_;
   std::vector<char> added_;   // written by the part of each triangle only
 };
+
+/// The axis of the polygon of `triangles` (its constrained Delaunay
+/// triangulation) by divide and conquer, into the engine's structure, in
+/// `parts` parts, or with 0 a few per thread of the current task arena.
+/// Parts run in parallel only on a kernel of doubles (Epick, or
+/// Simple_cartesian<double>): the number types of exact kernels (CORE::Expr,
+/// the lazy numbers of Epeck) share state between threads in CGAL 5.5.  The
+/// filter counters of the other threads are added to the caller's.
+template <class Traits>
+Divide_and_conquer_counts divide_and_conquer(Medial_axis_engine<Traits>& engine, std::vector<Triangle> triangles,
+                                             std::size_t parts = 0)
+{
+  const bool parallel = std::is_floating_point<typename Traits::Kernel::FT>::value;
+  if(parts == 0) {
+    parts = 1;
+#ifdef CGAL_PMA2_USE_TBB
+    // a few parts per thread, so that the threads stay busy to the end
+    const int threads = tbb::this_task_arena::max_concurrency();
+    if(threads > 1 && parallel) parts = 4 * std::size_t(threads);
+#endif
+  }
+  Divide_and_conquer<Traits> driver(engine, std::move(triangles));
+  Thread_counters<Traits> counters;
+  std::mutex mutex;
+  const std::thread::id caller = std::this_thread::get_id();
+  const Divide_and_conquer_counts counts =
+    driver.run(parts, parallel, [&](const auto& task) { counters.run_counted(caller, mutex, task); });
+  if constexpr(!std::is_empty<Thread_counters<Traits> >::value)
+    counters.gather();
+  return counts;
+}
 
 } // namespace internal
 } // namespace Progressive_medial_axes
