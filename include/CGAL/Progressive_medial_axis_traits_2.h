@@ -40,6 +40,8 @@
 #include <optional>
 #include <type_traits>
 #include <cstdint>
+#include <cstring>
+#include <vector>
 
 #include <boost/multiprecision/number.hpp>
 
@@ -84,6 +86,39 @@ struct Sqrt_hook<CORE::Expr> {
     if(rep.ffVal.getValue() < 0.0 && x.sign() >= 0)
       rep.ffVal = CORE::filteredFp(0.0, 1e300, 1);
     return CORE::sqrt(x);
+  }
+};
+
+/// The interval stage's lines of segments whose end points are doubles,
+/// kept in a small direct-mapped table per thread (a hit costs a hash and
+/// four comparisons; the line costs an interval square root and division).
+template <>
+struct Oriented_line_hook<Interval_nt<false> > {
+  typedef Interval_nt<false> I;
+  static Line_nt<I> apply(const Site_nt<I>& s)
+  {
+    if(!(s.ax.is_point() && s.ay.is_point() && s.bx.is_point() && s.by.is_point()))
+      return compute_oriented_line(s);
+    struct Entry {
+      double ax = 0, ay = 0, bx = 0, by = 0;
+      bool used = false;
+      Line_nt<I> line;
+    };
+    static thread_local std::vector<Entry> table(4096);
+    const double c[4] = {s.ax.inf(), s.ay.inf(), s.bx.inf(), s.by.inf()};
+    std::uint64_t h = 0x9e3779b97f4a7c15ull;
+    for(double x : c) {
+      std::uint64_t b;
+      std::memcpy(&b, &x, sizeof b);
+      h = (h ^ b) * 0xff51afd7ed558ccdull;
+    }
+    Entry& e = table[std::size_t(h >> 52)];
+    if(e.used && e.ax == c[0] && e.ay == c[1] && e.bx == c[2] && e.by == c[3])
+      return e.line;
+    e.line = compute_oriented_line(s);
+    e.ax = c[0]; e.ay = c[1]; e.bx = c[2]; e.by = c[3];
+    e.used = true;
+    return e.line;
   }
 };
 

@@ -122,7 +122,7 @@ struct Line_nt {
 };
 
 template <class NT>
-Line_nt<NT> oriented_line(const Site_nt<NT>& s)
+Line_nt<NT> compute_oriented_line(const Site_nt<NT>& s)
 {
   NT dx = s.bx - s.ax, dy = s.by - s.ay;
   // axis-parallel segments need no square root (this keeps exact
@@ -134,6 +134,21 @@ Line_nt<NT> oriented_line(const Site_nt<NT>& s)
   l.ny = dx * inv;
   l.k = l.nx * s.ax + l.ny * s.ay;
   return l;
+}
+
+/// The oriented line of a segment site, through a hook that a number type
+/// can specialise (the interval stage of the filtered traits keeps the
+/// lines of the segments it has seen: the same segments come back in many
+/// constructions, and the line costs a square root and a division).
+template <class NT>
+struct Oriented_line_hook {
+  static Line_nt<NT> apply(const Site_nt<NT>& s) { return compute_oriented_line(s); }
+};
+
+template <class NT>
+Line_nt<NT> oriented_line(const Site_nt<NT>& s)
+{
+  return Oriented_line_hook<NT>::apply(s);
 }
 
 /// Signed distance of `(x, y)` to the line, positive on the interior side.
