@@ -610,11 +610,6 @@ int run(const Options& o)
           job.stats.validation_seconds = job.validation_seconds;
           job.ma = &job.one_shot;
           analyse(o, job);
-          if(o.stats) {   // the step count of region growing (counting steps does not count as work)
-            const auto filters = filter_counters<Traits>(0);
-            job.steps = PMA(job.input->rings, Traits(), CGAL::TRUST_INPUT).number_of_steps();
-            restore_filter_counters<Traits>(filters, 0);
-          }
         });
         progress.done_one();
       });
@@ -691,6 +686,17 @@ int run(const Options& o)
     analyse(o, job);
   }
   const double total_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  if(o.stats && !progressive && o.union_with.empty()) {
+    // the step count of region growing, out of the timing and the filter
+    // counters (counting steps is not work of the one-shot)
+    const auto filters = filter_counters<Traits>(0);
+    in_arena([&]() {
+      for_each_polygon(largest_first(input), [&](std::size_t k) {
+        jobs[k].steps = PMA(jobs[k].input->rings, Traits(), CGAL::TRUST_INPUT).number_of_steps();
+      });
+    });
+    restore_filter_counters<Traits>(filters, 0);
+  }
 
   const bool shape_mode = (o.step >= 0);
   if(!o.shape_out.empty()) {
