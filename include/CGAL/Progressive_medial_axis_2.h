@@ -42,6 +42,23 @@
 
 namespace CGAL {
 
+namespace Progressive_medial_axes {
+namespace internal {
+
+// The event counts of a divide and conquer into the statistics.
+inline void copy_counts(Progressive_medial_axis_statistics& s, const Divide_and_conquer_counts& c)
+{
+  s.merges = c.merges;
+  s.switches = c.switches;
+  s.vanishings = c.vanishings;
+  s.anomalies = c.anomalies;
+  s.redone_merges = c.redone_merges;
+  s.max_queue = c.max_queue;
+}
+
+} // namespace internal
+} // namespace Progressive_medial_axes
+
 /*!
 \ingroup PkgProgressiveMedialAxis2Ref
 Whether the constructors of `Progressive_medial_axis_2` check the input
@@ -335,13 +352,7 @@ private:
     } else {
       boundary_->start();
       stats_.triangles = boundary_->number_of_triangles();
-      const auto& c = boundary_->start_counts();
-      stats_.merges = c.merges;
-      stats_.switches = c.switches;
-      stats_.vanishings = c.vanishings;
-      stats_.anomalies = c.anomalies;
-      stats_.redone_merges = c.redone_merges;
-      stats_.max_queue = c.max_queue;
+      Progressive_medial_axes::internal::copy_counts(stats_, boundary_->start_counts());
       stats_.merge_seconds = seconds_since(t1);
     }
     view_ = Medial_axis(std::shared_ptr<const Data>(data_));
@@ -396,12 +407,7 @@ one_shot_medial_axis(const std::vector<std::vector<typename Traits::Kernel::Poin
   Engine engine(*data, traits);
   const Divide_and_conquer_counts counts = divide_and_conquer(engine, std::move(triangles), parts);
   stats.merge_seconds = seconds_since(t0);
-  stats.merges = counts.merges;
-  stats.switches = counts.switches;
-  stats.vanishings = counts.vanishings;
-  stats.anomalies = counts.anomalies;
-  stats.redone_merges = counts.redone_merges;
-  stats.max_queue = counts.max_queue;
+  copy_counts(stats, counts);
   stats.parts = counts.parts;
   stats.parts_seconds_sum = counts.parts_seconds_sum;
   stats.parts_seconds_max = counts.parts_seconds_max;

@@ -136,15 +136,9 @@ public:
     if(vertices_on_edges) {
       pin(*vertices_on_edges);
     } else {
-      typedef Exact_predicates_kernel_for<Kernel> EK;
-      Rings<typename EK::type::Point_2> exact;
-      for(const auto& r : rings_) {
-        exact.emplace_back();
-        for(const auto& p : r) exact.back().push_back(EK::point(p));
-      }
-      Polygon_rings_validator<typename EK::type> validator(exact, true);
-      validator.run();
-      pin(validator.vertices_on_edges());
+      std::vector<std::pair<int, int> > on;
+      validate_and_find_vertices_on_edges(rings_, &on);
+      pin(on);
     }
     double length = 0;
     for(int g = 0; g < n; ++g) length += distance(g, next_[std::size_t(g)]);

@@ -186,23 +186,16 @@ public:
       // Inexact decisions: a merge that meets an anomaly is undone and
       // redone with exact decisions (as VRONI recovers at a higher level
       // of precision).
-      Hds& hds = hds_;
-      hds.begin_journal();
       Recording_merge_visitor recording;
-      try {
-        const Merge_statistics s = merge_.merge(hp, hm, recording);
-        check_new_vertices();
-        hds.end_journal();
+      Merge_statistics s;
+      if(try_inexactly([&] {
+           s = merge_.merge(hp, hm, recording);
+           check_new_vertices();
+         })) {
         recording.replay(visitor);
         return s;
-      } catch(Merge_anomaly&) {
-        hds.rollback();
-        hds.end_journal();
-      } catch(Uncertain_decision&) {
-        hds.rollback();
-        hds.end_journal();
       }
-      Merge_statistics s = exact_merge_->merge(hp, hm, visitor);
+      s = exact_merge_->merge(hp, hm, visitor);
       s.redone_exactly = true;
       return s;
     } else {
@@ -299,23 +292,17 @@ private:
   std::pair<int, int> local_update(bool is_cut, int b, int v, Cut_statistics& stats)
   {
     if constexpr(Has_fallback) {
-      hds_.begin_journal();
-      try {
-        const std::pair<int, int> r = is_cut ? cut_.cut(b, v) : cut_.split(b, v);
-        std::vector<int> vertices = hds_.pending_in_journal();
-        vertices.insert(vertices.end(), cut_.changed_vertices().begin(), cut_.changed_vertices().end());
-        check_vertices(vertices);
-        hds_.end_journal();
+      std::pair<int, int> r;
+      if(try_inexactly([&] {
+           r = is_cut ? cut_.cut(b, v) : cut_.split(b, v);
+           std::vector<int> vertices = hds_.pending_in_journal();
+           vertices.insert(vertices.end(), cut_.changed_vertices().begin(), cut_.changed_vertices().end());
+           check_vertices(vertices);
+         })) {
         stats = cut_.statistics();
         return r;
-      } catch(Merge_anomaly&) {
-        hds_.rollback();
-        hds_.end_journal();
-      } catch(Uncertain_decision&) {
-        hds_.rollback();
-        hds_.end_journal();
       }
-      const std::pair<int, int> r = is_cut ? exact_cut_->cut(b, v) : exact_cut_->split(b, v);
+      r = is_cut ? exact_cut_->cut(b, v) : exact_cut_->split(b, v);
       stats = exact_cut_->statistics();
       stats.redone_exactly = true;
       return r;
@@ -324,6 +311,25 @@ private:
       stats = cut_.statistics();
       return r;
     }
+  }
+
+  // Runs `op` (a change of the structure with inexact decisions) under the
+  // journal; undoes it and returns false if it met an anomaly or a decision
+  // too close to call.
+  template <class Op>
+  bool try_inexactly(const Op& op)
+  {
+    hds_.begin_journal();
+    try {
+      op();
+      hds_.end_journal();
+      return true;
+    } catch(Merge_anomaly&) {
+    } catch(Uncertain_decision&) {
+    }
+    hds_.rollback();
+    hds_.end_journal();
+    return false;
   }
 
   typedef typename Exact_fallback<Traits>::type Fallback;
