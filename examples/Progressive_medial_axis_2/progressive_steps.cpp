@@ -1,5 +1,6 @@
 // A progressive medial axis: refine step by step, watch the steps with a
-// visitor, and look at the axis of an intermediate shape.
+// visitor, and look at the axis of an intermediate shape; with either driver
+// (region growing, boundary evolution).
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_2.h>
 #include <CGAL/Progressive_medial_axis_2.h>
@@ -47,5 +48,16 @@ int main()
   std::cout << "complete after " << watcher.steps << " more steps (" << watcher.vanishings
             << " vanishing points); largest queue n_v = " << watcher.largest_queue << "; the axis has "
             << pma.medial_axis().number_of_edges() << " curves\n";
+
+  // the other driver: boundary evolution, whose step 0 is the outline
+  // simplified down to a triangle, and every step puts a vertex back
+  Progressive_medial_axis evolved(star, CGAL::BOUNDARY_EVOLUTION);
+  evolved.refine_to(12);
+  std::cout << "boundary evolution, after step " << evolved.current_step() << " of " << evolved.number_of_steps()
+            << ": the shape has " << evolved.current_shape().outer_boundary().size() << " vertices\n";
+  evolved.refine_all();
+  const auto& s = evolved.statistics();
+  std::cout << "complete: " << s.cuts << " triangles cut out, " << s.merges << " merges; the axis has "
+            << evolved.medial_axis().number_of_edges() << " curves\n";
   return 0;
 }
