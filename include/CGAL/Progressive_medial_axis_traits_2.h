@@ -89,39 +89,6 @@ struct Sqrt_hook<CORE::Expr> {
   }
 };
 
-/// The interval stage's lines of segments whose end points are doubles,
-/// kept in a small direct-mapped table per thread (a hit costs a hash and
-/// four comparisons; the line costs an interval square root and division).
-template <>
-struct Oriented_line_hook<Interval_nt<false> > {
-  typedef Interval_nt<false> I;
-  static Line_nt<I> apply(const Site_nt<I>& s)
-  {
-    if(!(s.ax.is_point() && s.ay.is_point() && s.bx.is_point() && s.by.is_point()))
-      return compute_oriented_line(s);
-    struct Entry {
-      double ax = 0, ay = 0, bx = 0, by = 0;
-      bool used = false;
-      Line_nt<I> line;
-    };
-    static thread_local std::vector<Entry> table(4096);
-    const double c[4] = {s.ax.inf(), s.ay.inf(), s.bx.inf(), s.by.inf()};
-    std::uint64_t h = 0x9e3779b97f4a7c15ull;
-    for(double x : c) {
-      std::uint64_t b;
-      std::memcpy(&b, &x, sizeof b);
-      h = (h ^ b) * 0xff51afd7ed558ccdull;
-    }
-    Entry& e = table[std::size_t(h >> 52)];
-    if(e.used && e.ax == c[0] && e.ay == c[1] && e.bx == c[2] && e.by == c[3])
-      return e.line;
-    e.line = compute_oriented_line(s);
-    e.ax = c[0]; e.ay = c[1]; e.bx = c[2]; e.by = c[3];
-    e.used = true;
-    return e.line;
-  }
-};
-
 /// The orientation predicate of kernel K, exact: for a kernel of doubles
 /// (Simple_cartesian<double>), that of Epick on the same points.
 template <class K>
@@ -597,17 +564,19 @@ private:
     if constexpr(Floating) {
       I::Site_nt<FT> sn[3] = {I::site_nt<FT>(s[0], cv), I::site_nt<FT>(s[1], cv), I::site_nt<FT>(s[2], cv)};
       I::Circle_nt<FT> c;
-      if(!I::medial_circle(sn, rel, c) || !I::plausible_circle(sn, rel, c))
+      if(!I::medial_circle(sn, rel, c) || !I::plausible_circle(sn, rel, c, true))
         throw I::Uncertain_decision();
       const FT v = I::conflict_value(segment.p.x(), segment.p.y(), segment.q.x(), segment.q.y(), c);
-      I::check_sign_is_clear(v, FT(c.r * c.r + std::fabs(v)));
+      // the centre is off by a few units in the last place of its
+      // coordinates: dist^2 by about 2 r times that
+      const FT centre_error = FT(64 * 2.220446049250313e-16) * (std::fabs(c.x) + std::fabs(c.y) + c.r);
+      if(!(std::fabs(v) > FT(1e-9) * (c.r * c.r + std::fabs(v)) + FT(2) * c.r * centre_error))
+        throw I::Uncertain_decision();
       return v < 0;
     } else {
       FT v;
-      if(!I::evaluate_time<FT>(I::TIME_CONFLICT, segment, s, rel, cv, v)) {
-        CGAL_assertion_msg(false, "a vertex without a disk");
-        return false;
-      }
+      if(!I::evaluate_time<FT>(I::TIME_CONFLICT, segment, s, rel, cv, v))
+        throw I::Uncertain_decision();   // no such disk
       return CGAL::is_negative(v);
     }
   }
@@ -1057,10 +1026,8 @@ private:
   static bool conflict(const Site_2& segment, const Site_2* s)
   {
     Event_time_2 t, zero;
-    if(!time(Progressive_medial_axes::internal::TIME_CONFLICT, segment, s, t)) {
-      CGAL_assertion_msg(false, "a vertex without a disk");
-      return false;
-    }
+    if(!time(Progressive_medial_axes::internal::TIME_CONFLICT, segment, s, t))
+      throw Progressive_medial_axes::internal::Uncertain_decision();   // no such disk
     time(Progressive_medial_axes::internal::TIME_ZERO, segment, nullptr, zero);
     return compare_times(t, zero) == SMALLER;
   }

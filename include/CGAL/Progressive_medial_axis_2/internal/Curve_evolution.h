@@ -382,7 +382,12 @@ private:
     const double x1 = (std::max)({x_[std::size_t(u)], x_[std::size_t(v)], x_[std::size_t(w)]});
     const double y0 = (std::min)({y_[std::size_t(u)], y_[std::size_t(v)], y_[std::size_t(w)]});
     const double y1 = (std::max)({y_[std::size_t(u)], y_[std::size_t(v)], y_[std::size_t(w)]});
-    const int j0 = row_of(y0), j1 = row_of(y1);
+    int j0 = row_of(y0), j1 = row_of(y1);
+    if constexpr(!std::is_floating_point<typename Kernel::FT>::value) {
+      // (coordinates rounded from exact numbers: a row more on each side)
+      j0 = (std::max)(0, j0 - 1);
+      j1 = (std::min)(rows_ - 1, j1 + 1);
+    }
     const double tx[3] = {x_[std::size_t(u)], x_[std::size_t(v)], x_[std::size_t(w)]};
     const double ty[3] = {y_[std::size_t(u)], y_[std::size_t(v)], y_[std::size_t(w)]};
     const double dy = 1e-6 * row_height_ + 1e-14 * (std::fabs(y0) + std::fabs(y1));
@@ -410,7 +415,7 @@ private:
       const Grid_entry* last = grid_.data() + row_start_[std::size_t(j) + 1];
       const Grid_entry* it = std::lower_bound(first, last, lo, [](const Grid_entry& e, double x) { return e.x < x; });
       for(; it != last && it->x <= hi; ++it) {
-        if(it->y < y0 || it->y > y1) continue;
+        if(it->y < y0 - dy || it->y > y1 + dy) continue;
         const int g = it->g;
         if(g == u || g == v || g == w || !alive_[std::size_t(g)]) continue;
         if(in_closed_triangle(g, u, v, w, o)) return false;

@@ -157,6 +157,7 @@ public:
     x.halfedge = NO_INDEX;
     x.input_point = input_point;
     x.alive = true;
+    x.triple[0][0] = NO_INDEX;   // (a reused slot: no stale generators)
     return v;
   }
 

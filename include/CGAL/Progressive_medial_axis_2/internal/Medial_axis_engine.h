@@ -326,6 +326,10 @@ private:
       return true;
     } catch(Merge_anomaly&) {
     } catch(Uncertain_decision&) {
+    } catch(...) {
+      hds_.rollback();
+      hds_.end_journal();
+      throw;
     }
     hds_.rollback();
     hds_.end_journal();

@@ -17,11 +17,15 @@
 #ifndef CGAL_PROGRESSIVE_MEDIAL_AXIS_2_INTERNAL_MEDIAL_CONSTRUCTIONS_H
 #define CGAL_PROGRESSIVE_MEDIAL_AXIS_2_INTERNAL_MEDIAL_CONSTRUCTIONS_H
 
+#include <CGAL/Interval_nt.h>
 #include <CGAL/number_utils.h>
 #include <CGAL/Uncertain.h>
 
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <type_traits>
+#include <vector>
 
 namespace CGAL {
 namespace Progressive_medial_axes {
@@ -150,6 +154,39 @@ Line_nt<NT> oriented_line(const Site_nt<NT>& s)
 {
   return Oriented_line_hook<NT>::apply(s);
 }
+
+/// The interval stage's lines of segments whose end points are doubles,
+/// kept in a small direct-mapped table per thread (a hit costs a hash and
+/// four comparisons; the line costs an interval square root and division).
+template <>
+struct Oriented_line_hook<Interval_nt<false> > {
+  typedef Interval_nt<false> I;
+  static Line_nt<I> apply(const Site_nt<I>& s)
+  {
+    if(!(s.ax.is_point() && s.ay.is_point() && s.bx.is_point() && s.by.is_point()))
+      return compute_oriented_line(s);
+    struct Entry {
+      double ax = 0, ay = 0, bx = 0, by = 0;
+      bool used = false;
+      Line_nt<I> line;
+    };
+    static thread_local std::vector<Entry> table(4096);
+    const double c[4] = {s.ax.inf(), s.ay.inf(), s.bx.inf(), s.by.inf()};
+    std::uint64_t h = 0x9e3779b97f4a7c15ull;
+    for(double x : c) {
+      std::uint64_t b;
+      std::memcpy(&b, &x, sizeof b);
+      h = (h ^ b) * 0xff51afd7ed558ccdull;
+    }
+    Entry& e = table[std::size_t(h >> 52)];
+    if(e.used && e.ax == c[0] && e.ay == c[1] && e.bx == c[2] && e.by == c[3])
+      return e.line;
+    e.line = compute_oriented_line(s);
+    e.ax = c[0]; e.ay = c[1]; e.bx = c[2]; e.by = c[3];
+    e.used = true;
+    return e.line;
+  }
+};
 
 /// Signed distance of `(x, y)` to the line, positive on the interior side.
 template <class NT>

@@ -132,18 +132,46 @@ public:
   /// (the front is not one curve from u to w).
   std::pair<int, int> cut(int b, int v)
   {
-    try {
-      return cut_impl(b, v);
-    } catch(...) {
-      end_marks();   // (the double model redoes the cut: no stale marks)
-      throw;
-    }
+    return guarded([&] { return cut_impl(b, v); });
   }
 
   /// Puts the input point `v` back into the boundary edge `b` from u to w
   /// (v inside the segment uw).  Returns the new boundary half-edges from
   /// u to v and from v to w.
   std::pair<int, int> split(int b, int v)
+  {
+    return guarded([&] { return split_impl(b, v); });
+  }
+
+private:
+  enum State : signed char { UNKNOWN = 0, KEPT = 1, CONFLICT = 2 };
+  enum Edge_mark : char { GONE = 1, CROSSED = 2 };
+
+  // Runs a cut or a split.  Every check that can fail runs before the
+  // structure changes: on a failure, a strict (double) model throws, so
+  // that the engine redoes the step with exact decisions; an exact model
+  // returns NO_INDEX twice, the structure unchanged, and the driver computes
+  // the step in one shot (a failure there is a bug, asserted in debug builds).
+  template <class Op>
+  std::pair<int, int> guarded(const Op& op)
+  {
+    try {
+      return op();
+    } catch(Merge_anomaly&) {
+      end_marks();
+      if(strict_) throw;
+    } catch(Uncertain_decision&) {
+      end_marks();
+      if(strict_) throw;
+    } catch(...) {
+      end_marks();
+      throw;
+    }
+    stats_.enclosed = true;
+    return std::make_pair(NO_INDEX, NO_INDEX);
+  }
+
+  std::pair<int, int> split_impl(int b, int v)
   {
     stats_ = Cut_statistics();
     changed_.clear();
@@ -162,10 +190,13 @@ public:
       require(h != b && ++guard <= hds_.halfedge_capacity());
       const int y = hds_.target(h);
       if(y == vU) { at_y = SMALLER; break; }
-      if(input_of(y) != NO_INDEX) continue;   // a corner of w's side (the normal at a reflex w)
-      const Site_2* s = vertex_sites(y);
       Time t;
-      require(traits_.compute_disk_foot_time_2_object()(line, s[0], s[1], s[2], t));
+      if(input_of(y) != NO_INDEX) {   // (a corner on the cell, where rings touch)
+        t = traits_.compute_foot_time_2_object()(line, points_[input_of(y)]);
+      } else {
+        const Site_2* s = vertex_sites(y);
+        require(traits_.compute_disk_foot_time_2_object()(line, s[0], s[1], s[2], t));
+      }
       at_y = compare_(t, fv);
       if(at_y != LARGER) break;
     }
@@ -229,10 +260,6 @@ public:
     changed_.push_back(y);
     return std::make_pair(b1, b2);
   }
-
-private:
-  enum State : signed char { UNKNOWN = 0, KEPT = 1, CONFLICT = 2 };
-  enum Edge_mark : char { GONE = 1, CROSSED = 2 };
 
   std::pair<int, int> cut_impl(int b, int v)
   {
@@ -390,7 +417,7 @@ private:
       const int bb = i == k ? vW : cv[std::size_t(i)];
       int ga = i == 0 ? 0 : gen[std::size_t(i - 1)];
       const int gb = i == k ? 2 : gen[std::size_t(i)];
-      require(ga <= gb);
+      CGAL_assertion(ga <= gb);
       std::vector<int> arc;
       int from = a;
       while(ga < gb) {
@@ -411,7 +438,7 @@ private:
       hds_.link(arc.back(), after);
       hds_.face(F).halfedge = arc.front();
     }
-    require(t1 != NO_INDEX && t2 != NO_INDEX);
+    CGAL_assertion(t1 != NO_INDEX && t2 != NO_INDEX);
     // the crossed edges keep their part on the kept side
     for(int i = 0; i < k; ++i) {
       const int h = crossings[std::size_t(i)];
@@ -511,8 +538,11 @@ private:
   {
     for(int x : touched_) state_[std::size_t(x)] = UNKNOWN;
     for(int e : marked_edges_) edge_mark_[std::size_t(e >> 1)] = 0;
+    for(int h : crossings_)
+      if(std::size_t(h >> 1) < edge_mark_.size()) edge_mark_[std::size_t(h >> 1)] = 0;
     touched_.clear();
     marked_edges_.clear();
+    crossings_.clear();
   }
   void set_state(int x, State s)
   {
@@ -533,15 +563,45 @@ private:
     if(state_[std::size_t(x)] != UNKNOWN) return state_[std::size_t(x)] == CONFLICT;
     bool c = false;
     if(input_of(x) == NO_INDEX) {
-      const Site_2* s = vertex_sites(x);
-      c = meets(s, e1_, U_) || meets(s, e2_, W_);
+      try {
+        const Site_2* s = vertex_sites(x);
+        c = meets(s, e1_, U_) || meets(s, e2_, W_);
+      } catch(Uncertain_decision&) {
+        // the generators that defined x give no disk (where more than three
+        // meet): three consecutive ones around it, as resolve_vertex() does
+        if(strict_) throw;
+        c = meets_by_neighbours(x);
+      }
     }
     set_state(x, c ? CONFLICT : KEPT);
     return c;
   }
 
+  bool meets_by_neighbours(int x)
+  {
+    std::vector<int> faces;
+    const int h0 = chds().vertex(x).halfedge;
+    int h = h0;
+    do {
+      faces.push_back(hds_.face_of(h));
+      h = Hds::twin(hds_.next(h));
+    } while(h != h0 && faces.size() < 64);
+    const std::size_t d = faces.size();
+    for(std::size_t i = 0; i < d; ++i) {
+      const int a = faces[(i + 2) % d], b = faces[(i + 1) % d], c = faces[i];
+      if(a < 0 || b < 0 || c < 0) continue;
+      const Site_2 s[3] = {site(a), site(b), site(c)};
+      try {
+        return meets(s, e1_, U_) || meets(s, e2_, W_);
+      } catch(Uncertain_decision&) {
+      }
+    }
+    throw Uncertain_decision();
+  }
+
   // Whether the open disk of the sites `s` meets the new segment `e`, one
-  // of whose ends is the old corner `corner`.  A disk through the corner
+  // of whose ends is the old corner `corner` (Uncertain_decision if the
+  // sites give no disk).  A disk through the corner
   // (the point generator there is one of its sites: a tie of the general
   // test, common) meets it exactly when the segment leaves the corner into
   // the disk: the centre's foot on the segment lies beyond the corner.
@@ -550,7 +610,7 @@ private:
     for(int i = 0; i < 3; ++i)
       if(s[i].is_point && s[i].p == points_[corner]) {
         Time t;
-        require(traits_.compute_disk_foot_time_2_object()(e, s[0], s[1], s[2], t));
+        if(!traits_.compute_disk_foot_time_2_object()(e, s[0], s[1], s[2], t)) throw Uncertain_decision();
         return corner == U_ ? compare_(t, start_time(e)) == LARGER : compare_(t, end_time(e)) == SMALLER;
       }
     return traits_.do_intersect_disk_segment_2_object()(s[0], s[1], s[2], e);
