@@ -56,9 +56,9 @@
 // cells can surround a small hole near the chain: Z is then not a disk, a
 // second front runs around the hole's cells, and the check fails; the cut
 // then changes nothing and says so (the driver computes that step in one
-// shot).  Every cell of the old axis other
-// than C and the point cells of u and w keeps a part next to its
-// generator: a cell is star-shaped from its generator, and a point whose
+// shot).  Every cell of the old axis other than C and the point cells of
+// u and w keeps a part next to its generator: a cell is star-shaped from
+// its generator, and a point whose
 // new nearest boundary point is on the chain has the points between it and
 // its old foot closer to their old generator.  A kept vertex whose disk is
 // tangent to the chain (four or more generators at one point) stays, and
@@ -67,7 +67,10 @@
 //
 // With inexact decisions (the double model) the walk can meet an event
 // that no exact decision meets: it then throws Merge_anomaly in strict
-// mode, and the engine redoes the cut with exact decisions.
+// mode, and the engine redoes the cut with exact decisions.  Every check
+// that can fail runs before the structure changes, so that a failure with
+// exact decisions (a bug; asserted in debug builds) also leaves the
+// structure as it was, and the step is computed in one shot.
 //
 // The split.  A vertex v put back on the boundary edge uw (u, v, w
 // collinear, v between) splits the cell C in two along the normal at v:
