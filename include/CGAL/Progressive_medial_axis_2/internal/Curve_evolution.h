@@ -69,6 +69,8 @@
 #include <CGAL/Progressive_medial_axis_2/internal/Input_conversion.h>
 #include <CGAL/assertions.h>
 
+#include <boost/align/aligned_allocator.hpp>
+
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -153,25 +155,28 @@ public:
     const int n = int(x_.size());
     live_ = std::size_t(n);
     pos_.assign(std::size_t(n) + rings_.size(), -1);
+    // every vertex and hole at most once in the heap: no reallocation
+    heap_storage_.resize(std::size_t(n) + rings_.size() + heap_pad);
+    heap_ = heap_storage_.data() + heap_pad;
     removals_.reserve(std::size_t(n));
     build_grid();
     for(;;) {
       std::size_t removed_in_round = 0;
       // the queue of the round, built at once (Floyd)
-      heap_.clear();
+      heap_size_ = 0;
       for(int g = 0; g < n; ++g)
         if(alive_[std::size_t(g)] && !pinned_[std::size_t(g)] && size_[std::size_t(ring_of_[std::size_t(g)])] > 3) {
-          pos_[std::size_t(g)] = int(heap_.size());
-          heap_.push_back(Item{relevance(g), g});
+          pos_[std::size_t(g)] = int(heap_size_);
+          heap_[heap_size_++] = Item{relevance(g), g};
         }
       for(int r = 1; r < int(size_.size()) && fill_holes_; ++r)
         if(size_[std::size_t(r)] == 3) {
-          pos_[std::size_t(n + r)] = int(heap_.size());
-          heap_.push_back(Item{fill_relevance(r), n + r});
+          pos_[std::size_t(n + r)] = int(heap_size_);
+          heap_[heap_size_++] = Item{fill_relevance(r), n + r};
         }
-      for(std::size_t i = heap_.size() / 4 + 1; i-- > 0;)
-        if(i < heap_.size()) sift_down(i);
-      while(!heap_.empty()) {
+      for(std::size_t i = heap_size_ / 4 + 1; i-- > 0;)
+        if(i < heap_size_) sift_down(i);
+      while(heap_size_ > 0) {
         const Item top = pop();
         if(top.id >= n) {
           const int r = top.id - n;
@@ -220,7 +225,7 @@ private:
   // fill (id n + ring), by (relevance, id)
   struct Item {
     double key;
-    int id;
+    int id;   // 16 bytes with the padding: 4 entries fill a cache line
     bool operator<(const Item& o) const { return key < o.key || (key == o.key && id < o.id); }
   };
   void place(std::size_t i, const Item& it)
@@ -242,7 +247,7 @@ private:
   void sift_down(std::size_t i)
   {
     const Item it = heap_[i];
-    const std::size_t m = heap_.size();
+    const std::size_t m = heap_size_;
     for(;;) {
       const std::size_t c = 4 * i + 1;
       if(c >= m) break;
@@ -260,9 +265,8 @@ private:
   {
     const Item top = heap_[0];
     pos_[std::size_t(top.id)] = -1;
-    const Item last = heap_.back();
-    heap_.pop_back();
-    if(!heap_.empty()) {
+    const Item last = heap_[--heap_size_];
+    if(heap_size_ > 0) {
       place(0, last);
       sift_down(0);
     }
@@ -273,9 +277,9 @@ private:
   {
     const int at = pos_[std::size_t(id)];
     if(at < 0) {
-      heap_.push_back(Item{key, id});
-      pos_[std::size_t(id)] = int(heap_.size()) - 1;
-      sift_up(heap_.size() - 1);
+      heap_[heap_size_] = Item{key, id};
+      pos_[std::size_t(id)] = int(heap_size_);
+      sift_up(heap_size_++);
       return;
     }
     const Item old = heap_[std::size_t(at)];
@@ -398,7 +402,7 @@ private:
       const double b0 = (std::max)(y0, gy0_ + double(j) * row_height_ - dy);
       const double b1 = (std::min)(y1, gy0_ + double(j + 1) * row_height_ + dy);
       double lo = HUGE_VAL, hi = -HUGE_VAL;
-      for(int e = 0; e < 3; ++e) {
+      for(int e = 0; e < 3 && j0 < j1; ++e) {   // (one row: the whole x-range)
         const double ax = tx[e], ay = ty[e], bx = tx[(e + 1) % 3], by = ty[(e + 1) % 3];
         if(ay >= b0 && ay <= b1) { lo = (std::min)(lo, ax); hi = (std::max)(hi, ax); }
         for(double yb : {b0, b1})
@@ -411,12 +415,12 @@ private:
       if(lo > hi) { lo = x0; hi = x1; }
       lo -= slack;
       hi += slack;
-      const Grid_entry* first = grid_.data() + row_start_[std::size_t(j)];
-      const Grid_entry* last = grid_.data() + row_start_[std::size_t(j) + 1];
-      const Grid_entry* it = std::lower_bound(first, last, lo, [](const Grid_entry& e, double x) { return e.x < x; });
-      for(; it != last && it->x <= hi; ++it) {
-        if(it->y < y0 - dy || it->y > y1 + dy) continue;
-        const int g = it->g;
+      const double* gx = grid_x_.data();
+      const std::size_t last = row_start_[std::size_t(j) + 1];
+      for(std::size_t it = std::size_t(std::lower_bound(gx + row_start_[std::size_t(j)], gx + last, lo) - gx);
+          it != last && gx[it] <= hi; ++it) {
+        const int g = grid_g_[it];
+        if(y_[std::size_t(g)] < y0 - dy || y_[std::size_t(g)] > y1 + dy) continue;
         if(g == u || g == v || g == w || !alive_[std::size_t(g)]) continue;
         if(in_closed_triangle(g, u, v, w, o)) return false;
       }
@@ -457,7 +461,8 @@ private:
       if(alive_[g]) {
         y0 = (std::min)(y0, y_[g]);
         y1 = (std::max)(y1, y_[g]);
-        length += distance(int(g), next_[g]);
+        // (an estimate of the length, without overflow)
+        length += std::fabs(x_[std::size_t(next_[g])] - x_[g]) + std::fabs(y_[std::size_t(next_[g])] - y_[g]);
         ++count;
       }
     const double h = (std::max)(y1 - y0, 1e-300);
@@ -474,13 +479,15 @@ private:
         ++row_start_[std::size_t(row_[g]) + 1];
       }
     for(int r = 0; r < rows_; ++r) row_start_[std::size_t(r) + 1] += row_start_[std::size_t(r)];
-    grid_.resize(count);
+    grid_g_.resize(count);
     std::vector<std::size_t> fill(row_start_.begin(), row_start_.end() - 1);
     for(std::size_t g = 0; g < x_.size(); ++g)
-      if(alive_[g]) grid_[fill[std::size_t(row_[g])]++] = Grid_entry{x_[g], y_[g], int(g)};
+      if(alive_[g]) grid_g_[fill[std::size_t(row_[g])]++] = int(g);
     for(int r = 0; r < rows_; ++r)
-      std::sort(grid_.begin() + std::ptrdiff_t(row_start_[std::size_t(r)]), grid_.begin() + std::ptrdiff_t(row_start_[std::size_t(r) + 1]),
-                [](const Grid_entry& a, const Grid_entry& b) { return a.x < b.x; });
+      std::sort(grid_g_.begin() + std::ptrdiff_t(row_start_[std::size_t(r)]), grid_g_.begin() + std::ptrdiff_t(row_start_[std::size_t(r) + 1]),
+                [this](int a, int b) { return x_[std::size_t(a)] < x_[std::size_t(b)]; });
+    grid_x_.resize(count);
+    for(std::size_t i = 0; i < count; ++i) grid_x_[i] = x_[std::size_t(grid_g_[i])];
     grid_capacity_ = count;
   }
 
@@ -490,7 +497,13 @@ private:
   std::vector<double> x_, y_;
   std::vector<char> alive_, pinned_;
   double scale_ = 1;
-  std::vector<Item> heap_;
+  // The heap: the children of entry i are 4i+1 to 4i+4, 64 bytes that
+  // start on a cache line (the storage is aligned to 64 bytes and the heap
+  // starts 3 entries in).
+  static constexpr std::size_t heap_pad = 3;
+  std::vector<Item, boost::alignment::aligned_allocator<Item, 64> > heap_storage_;
+  Item* heap_ = nullptr;
+  std::size_t heap_size_ = 0;
   std::vector<int> pos_;   // the place of each vertex (and hole) in the heap, or -1
   std::vector<Removal> removals_;
   bool fill_holes_ = true;
@@ -498,13 +511,10 @@ private:
   std::size_t live_ = 0, grid_capacity_ = 0;
   double gy0_ = 0, row_height_ = 1;
   int rows_ = 1;
-  struct Grid_entry {
-    double x, y;
-    int g;
-  };
   std::vector<std::size_t> row_start_;
   std::vector<int> row_;
-  std::vector<Grid_entry> grid_;
+  std::vector<double> grid_x_;   // the rows one after the other: x (searched apart, it is compact) and vertex
+  std::vector<int> grid_g_;
 };
 
 } // namespace internal
