@@ -37,6 +37,7 @@
 #include <vector>
 
 #ifdef CGAL_PMA2_USE_TBB
+#include <tbb/parallel_invoke.h>
 #include <tbb/task_arena.h>
 #endif
 
@@ -327,21 +328,38 @@ private:
 
     const auto first = std::chrono::steady_clock::now();
     data_ = std::make_shared<Data>();
-    Progressive_medial_axes::internal::set_points(*data_, rings, traits_.orientation_2_object());
+    auto set_points = [&] { Progressive_medial_axes::internal::set_points(*data_, rings, traits_.orientation_2_object()); };
+    if(driver_kind_ == REGION_GROWING) {
+      set_points();
+    } else {
+      // the curve evolution needs only the rings: it runs while the
+      // engine's data is set (in parallel where oneTBB is linked)
+      std::vector<typename Boundary_driver::Removal> removals;
+      auto evolve = [&] {
+        const auto t = std::chrono::steady_clock::now();
+        removals = Boundary_driver::evolve(rings, check == CHECK_INPUT ? &on_edges : nullptr);
+        stats_.evolution_seconds = seconds_since(t);
+      };
+#ifdef CGAL_PMA2_USE_TBB
+      tbb::parallel_invoke(evolve, set_points);
+#else
+      evolve();
+      set_points();
+#endif
+      engine_.reset(new Engine(*data_, traits_));
+      boundary_.reset(new Boundary_driver(*engine_, std::move(removals)));
+      number_of_steps_ = boundary_->number_of_steps();
+    }
     stats_.input_vertices = data_->points.size();
     stats_.holes = rings.size() - 1;
 
-    t0 = std::chrono::steady_clock::now();
-    engine_.reset(new Engine(*data_, traits_));
     if(driver_kind_ == REGION_GROWING) {
+      t0 = std::chrono::steady_clock::now();
+      engine_.reset(new Engine(*data_, traits_));
       region_.reset(new Region_driver(*engine_));
       stats_.triangles = region_->number_of_triangles();
       stats_.triangulation_seconds = seconds_since(t0);
       number_of_steps_ = region_->number_of_steps();
-    } else {
-      boundary_.reset(new Boundary_driver(*engine_, rings, check == CHECK_INPUT ? &on_edges : nullptr));
-      stats_.evolution_seconds = seconds_since(t0);
-      number_of_steps_ = boundary_->number_of_steps();
     }
 
     data_->hds.reserve(2 * data_->points.size() + 16, 4 * data_->points.size() + 16);

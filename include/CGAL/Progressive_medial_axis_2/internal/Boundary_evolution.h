@@ -44,6 +44,7 @@
 
 #include <array>
 #include <cstddef>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -58,18 +59,25 @@ public:
   typedef typename Traits::Kernel Kernel;
   typedef typename Kernel::Point_2 Point_2;
 
-  /// Runs the curve evolution of `rings` (the polygon the engine's data was
-  /// set from, in input order); `vertices_on_edges` as the validator found
-  /// them, if it ran (else the evolution finds them).
-  Boundary_evolution(Engine& engine, const std::vector<std::vector<Point_2> >& rings,
-                     const std::vector<std::pair<int, int> >* vertices_on_edges = nullptr)
-    : engine_(engine), rings_(rings)
+  typedef typename Curve_evolution<Kernel>::Removal Removal;
+
+  /// The curve evolution of `rings` (holes kept as triangles);
+  /// `vertices_on_edges` as the validator found them, if it ran (else the
+  /// evolution finds them).  It needs only the rings: it may run while the
+  /// engine's data is set from them.
+  static std::vector<Removal> evolve(const std::vector<std::vector<Point_2> >& rings,
+                                     const std::vector<std::pair<int, int> >* vertices_on_edges = nullptr)
   {
-    Curve_evolution<Kernel> evolution(rings_, Kernel(), false, vertices_on_edges);
+    Curve_evolution<Kernel> evolution(rings, Kernel(), false, vertices_on_edges);
     evolution.run();
-    removals_ = evolution.removals();
-    info_ = engine.data().info;
+    return evolution.take_removals();
   }
+
+  /// The driver over `engine`, whose data was set from the rings that
+  /// `evolve()` simplified into `removals`.
+  Boundary_evolution(Engine& engine, std::vector<Removal>&& removals)
+    : engine_(engine), removals_(std::move(removals)), info_(engine.data().info)
+  {}
 
   std::size_t number_of_steps() const { return removals_.size(); }
   /// Vertices of the coarsest shape.
@@ -173,8 +181,7 @@ private:
   }
 
   Engine& engine_;
-  std::vector<std::vector<Point_2> > rings_;
-  std::vector<typename Curve_evolution<Kernel>::Removal> removals_;
+  std::vector<Removal> removals_;
   std::vector<Point_info> info_;   // the input points' information, as set_points() made it
   std::vector<char> alive_;        // the points of the current shape
   std::size_t recomputed_ = 0;

@@ -74,6 +74,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <type_traits>
 #include <utility>
 #include <vector>
@@ -109,31 +110,29 @@ public:
     : rings_(rings), fill_holes_(fill_holes)
   {
     (void)kernel;
-    for(const auto& r : rings_) {
-      begin_.push_back(int(x_.size()));
-      for(const Point_2& p : r) {
-        x_.push_back(CGAL::to_double(p.x()));
-        y_.push_back(CGAL::to_double(p.y()));
+    std::size_t n = 0;
+    for(const auto& r : rings_) n += r.size();
+    v_.resize(n);
+    begin_.reserve(rings_.size() + 1);
+    for(int r = 0, g = 0; r < int(rings_.size()); ++r) {
+      begin_.push_back(g);
+      const int b = g, e = g + int(rings_[std::size_t(r)].size());
+      for(const Point_2& p : rings_[std::size_t(r)]) {
+        Vertex& x = v_[std::size_t(g)];
+        x.x = CGAL::to_double(p.x());
+        x.y = CGAL::to_double(p.y());
+        x.prev = g == b ? e - 1 : g - 1;
+        x.next = g + 1 == e ? b : g + 1;
+        x.ring_flags = unsigned(r) << FLAG_BITS | ALIVE;
+        ++g;
       }
     }
-    begin_.push_back(int(x_.size()));
-    const int n = int(x_.size());
-    ring_of_.resize(std::size_t(n));
-    prev_.resize(std::size_t(n));
-    next_.resize(std::size_t(n));
-    for(int r = 0; r + 1 < int(begin_.size()); ++r)
-      for(int g = begin_[std::size_t(r)]; g < begin_[std::size_t(r) + 1]; ++g) {
-        ring_of_[std::size_t(g)] = r;
-        prev_[std::size_t(g)] = g == begin_[std::size_t(r)] ? begin_[std::size_t(r) + 1] - 1 : g - 1;
-        next_[std::size_t(g)] = g + 1 == begin_[std::size_t(r) + 1] ? begin_[std::size_t(r)] : g + 1;
-      }
+    begin_.push_back(int(n));
     size_.resize(rings_.size());
     for(std::size_t r = 0; r < rings_.size(); ++r) size_[r] = rings_[r].size();
-    alive_.assign(std::size_t(n), 1);
-    pinned_.assign(std::size_t(n), 0);
     // the vertices inside an edge of the input stay
     auto pin = [&](const std::vector<std::pair<int, int> >& on) {
-      for(const auto& rv : on) pinned_[std::size_t(begin_[std::size_t(rv.first)] + rv.second)] = 1;
+      for(const auto& rv : on) v_[std::size_t(begin_[std::size_t(rv.first)] + rv.second)].ring_flags |= PINNED;
     };
     if(vertices_on_edges) {
       pin(*vertices_on_edges);
@@ -143,7 +142,14 @@ public:
       pin(on);
     }
     double length = 0;
-    for(int g = 0; g < n; ++g) length += distance(g, next_[std::size_t(g)]);
+    for(const Vertex& x : v_) {
+      const double dx = v_[std::size_t(x.next)].x - x.x, dy = v_[std::size_t(x.next)].y - x.y;
+      length += std::sqrt(dx * dx + dy * dy);
+    }
+    if(!std::isfinite(length)) {   // (coordinates near the limits of double)
+      length = 0;
+      for(const Vertex& x : v_) length += std::hypot(v_[std::size_t(x.next)].x - x.x, v_[std::size_t(x.next)].y - x.y);
+    }
     scale_ = length > 0 ? 1 / length : 1;
   }
 
@@ -152,7 +158,7 @@ public:
   {
     if(ran_) return;
     ran_ = true;
-    const int n = int(x_.size());
+    const int n = int(v_.size());
     live_ = std::size_t(n);
     pos_.assign(std::size_t(n) + rings_.size(), -1);
     // every vertex and hole at most once in the heap: no reallocation
@@ -164,44 +170,64 @@ public:
       std::size_t removed_in_round = 0;
       // the queue of the round, built at once (Floyd)
       heap_size_ = 0;
-      for(int g = 0; g < n; ++g)
-        if(alive_[std::size_t(g)] && !pinned_[std::size_t(g)] && size_[std::size_t(ring_of_[std::size_t(g)])] > 3) {
+      for(int g = 0; g < n; ++g) {
+        const Vertex& x = v_[std::size_t(g)];
+        if(x.flags() == ALIVE && size_[std::size_t(x.ring())] > 3) {
           pos_[std::size_t(g)] = int(heap_size_);
-          heap_[heap_size_++] = Item{relevance(g), g};
+          heap_[heap_size_++] = Item(relevance(g), g);
         }
+      }
       for(int r = 1; r < int(size_.size()) && fill_holes_; ++r)
         if(size_[std::size_t(r)] == 3) {
           pos_[std::size_t(n + r)] = int(heap_size_);
-          heap_[heap_size_++] = Item{fill_relevance(r), n + r};
+          heap_[heap_size_++] = Item(fill_relevance(r), n + r);
         }
-      for(std::size_t i = heap_size_ / 4 + 1; i-- > 0;)
+      for(std::size_t i = heap_size_ / arity + 1; i-- > 0;)
         if(i < heap_size_) sift_down(i);
       while(heap_size_ > 0) {
         const Item top = pop();
-        if(top.id >= n) {
-          const int r = top.id - n;
+#if defined(__GNUC__)
+        // the vertex that comes next, while this one is tested
+        if(heap_size_ > 0 && heap_[0].id() < n) __builtin_prefetch(&v_[std::size_t(heap_[0].id())]);
+#endif
+        if(top.id() >= n) {
+          const int r = top.id() - n;
           if(size_[std::size_t(r)] != 3) continue;
-          fill(r, top.key);
+          fill(r, top.key());
           ++removed_in_round;
           continue;
         }
-        const std::size_t g = std::size_t(top.id);
-        if(!alive_[g] || size_[std::size_t(ring_of_[g])] <= 3 || !removable(top.id))
-          continue;
-        remove(top.id, top.key);
-        ++removed_in_round;
+        const Vertex& x = v_[std::size_t(top.id())];
+        if((x.ring_flags & ALIVE) && size_[std::size_t(x.ring())] > 3 && removable(top.id())) {
+          remove(top.id(), top.key());
+          ++removed_in_round;
+        }
+#if defined(__GNUC__)
+        // what the test of the next vertex reads: its neighbours and its
+        // place in the rows (while the queue is updated)
+        if(heap_size_ > 0 && heap_[0].id() < n) {
+          const Vertex& y = v_[std::size_t(heap_[0].id())];
+          if(y.ring_flags & ALIVE) {
+            __builtin_prefetch(&v_[std::size_t(y.prev)]);
+            __builtin_prefetch(&v_[std::size_t(y.next)]);
+            __builtin_prefetch(&grid_[std::size_t(y.slot)]);
+          }
+        }
+#endif
       }
       if(removed_in_round == 0) break;
     }
   }
 
   const std::vector<Removal>& removals() const { return removals_; }
+  /// The steps, moved out (shape() then no longer works).
+  std::vector<Removal> take_removals() { return std::move(removals_); }
 
   /// The rings after the first `k` steps (vertices in input order; filled
   /// holes left out, so later holes move forward).
   Rings<Point_2> shape(std::size_t k) const
   {
-    std::vector<char> gone(x_.size(), 0), filled(rings_.size(), 0);
+    std::vector<char> gone(v_.size(), 0), filled(rings_.size(), 0);
     for(std::size_t i = 0; i < k && i < removals_.size(); ++i) {
       if(removals_[i].vertex < 0)
         filled[std::size_t(removals_[i].ring)] = 1;
@@ -221,23 +247,66 @@ public:
 private:
   typedef Exact_predicates_kernel_for<Kernel> EK;
 
-  // ---- the indexed 4-ary min-heap of vertices (ids < n) and of holes to
-  // fill (id n + ring), by (relevance, id)
-  struct Item {
-    double key;
-    int id;   // 16 bytes with the padding: 4 entries fill a cache line
-    bool operator<(const Item& o) const { return key < o.key || (key == o.key && id < o.id); }
+  // ---- a vertex: its coordinates in double, its neighbours in the current
+  // shape, its ring, and whether it is alive and pinned (32 bytes: what a
+  // step reads of a vertex is one cache line)
+  enum { ALIVE = 1, PINNED = 2, FLAG_BITS = 2 };
+  struct Vertex {
+    double x, y;
+    int prev, next;
+    int slot;          // its place in the rows, while alive
+    unsigned ring_flags;   // ring << FLAG_BITS | flags
+    int ring() const { return int(ring_flags >> FLAG_BITS); }
+    unsigned flags() const { return ring_flags & ((1u << FLAG_BITS) - 1); }
   };
+  // the rows one after the other: a live vertex's coordinates and id (-1
+  // once it is gone), so that a query does not read the vertices
+  struct Entry {
+    double x, y;
+    int g;
+  };
+  bool alive(int g) const { return (v_[std::size_t(g)].ring_flags & ALIVE) != 0; }
+  bool pinned(int g) const { return (v_[std::size_t(g)].ring_flags & PINNED) != 0; }
+
+  // ---- the indexed 8-ary min-heap of vertices (ids < n) and of holes to
+  // fill (id n + ring), by (relevance, id)
+  // An entry packs the relevance, rounded to a float, above the id: one
+  // integer comparison orders by (relevance, id), and the 8 children of an
+  // entry fill one cache line.  (A float keeps the order of relevances
+  // that differ by more than 2^-24 of themselves; closer ones go by id.)
+  struct Item {
+    std::uint64_t bits;
+    Item() = default;
+    Item(double key, int id) : bits(std::uint64_t(float_bits(key)) << 32 | std::uint32_t(id)) {}
+    int id() const { return int(std::uint32_t(bits)); }
+    double key() const
+    {
+      const std::uint32_t b = std::uint32_t(bits >> 32);
+      float f;
+      std::memcpy(&f, &b, sizeof f);
+      return double(f);
+    }
+    bool operator<(const Item& o) const { return bits < o.bits; }
+    // relevances are at least 0: their float bits are in the same order
+    static std::uint32_t float_bits(double key)
+    {
+      const float f = float(key);
+      std::uint32_t b;
+      std::memcpy(&b, &f, sizeof b);
+      return b;
+    }
+  };
+  static constexpr std::size_t arity = 8;
   void place(std::size_t i, const Item& it)
   {
     heap_[i] = it;
-    pos_[std::size_t(it.id)] = int(i);
+    pos_[std::size_t(it.id())] = int(i);
   }
   void sift_up(std::size_t i)
   {
     const Item it = heap_[i];
     while(i > 0) {
-      const std::size_t p = (i - 1) / 4;
+      const std::size_t p = (i - 1) / arity;
       if(!(it < heap_[p])) break;
       place(i, heap_[p]);
       i = p;
@@ -249,12 +318,31 @@ private:
     const Item it = heap_[i];
     const std::size_t m = heap_size_;
     for(;;) {
-      const std::size_t c = 4 * i + 1;
+      const std::size_t c = arity * i + 1;
       if(c >= m) break;
-      std::size_t best = c;
-      const std::size_t e = (std::min)(c + 4, m);
-      for(std::size_t j = c + 1; j < e; ++j)
-        if(heap_[j] < heap_[best]) best = j;
+      std::size_t best;
+      if(c + arity <= m) {
+        // the least of 8 by a tournament of conditional moves (the
+        // branches of a loop are mispredicted: the children are in random order)
+        const Item* ch = heap_ + c;
+        std::uint64_t v[4];
+        std::size_t k[4];
+        for(std::size_t j = 0; j < 4; ++j) {
+          const bool right = ch[2 * j + 1].bits < ch[2 * j].bits;
+          v[j] = right ? ch[2 * j + 1].bits : ch[2 * j].bits;
+          k[j] = 2 * j + (right ? 1 : 0);
+        }
+        for(std::size_t j = 0; j < 2; ++j) {
+          const bool right = v[2 * j + 1] < v[2 * j];
+          v[j] = right ? v[2 * j + 1] : v[2 * j];
+          k[j] = right ? k[2 * j + 1] : k[2 * j];
+        }
+        best = c + (v[1] < v[0] ? k[1] : k[0]);
+      } else {
+        best = c;
+        for(std::size_t j = c + 1; j < m; ++j)
+          best = heap_[j] < heap_[best] ? j : best;
+      }
       if(!(heap_[best] < it)) break;
       place(i, heap_[best]);
       i = best;
@@ -264,7 +352,7 @@ private:
   Item pop()
   {
     const Item top = heap_[0];
-    pos_[std::size_t(top.id)] = -1;
+    pos_[std::size_t(top.id())] = -1;
     const Item last = heap_[--heap_size_];
     if(heap_size_ > 0) {
       place(0, last);
@@ -277,36 +365,53 @@ private:
   {
     const int at = pos_[std::size_t(id)];
     if(at < 0) {
-      heap_[heap_size_] = Item{key, id};
+      heap_[heap_size_] = Item(key, id);
       pos_[std::size_t(id)] = int(heap_size_);
       sift_up(heap_size_++);
       return;
     }
     const Item old = heap_[std::size_t(at)];
-    heap_[std::size_t(at)].key = key;
+    heap_[std::size_t(at)] = Item(key, id);
     if(heap_[std::size_t(at)] < old) sift_up(std::size_t(at));
     else sift_down(std::size_t(at));
   }
 
-  double distance(int a, int b) const
-  {
-    return std::hypot(x_[std::size_t(b)] - x_[std::size_t(a)], y_[std::size_t(b)] - y_[std::size_t(a)]);
-  }
-
   double relevance(int g) const
   {
-    const int u = prev_[std::size_t(g)], w = next_[std::size_t(g)];
-    const double ax = x_[std::size_t(g)] - x_[std::size_t(u)], ay = y_[std::size_t(g)] - y_[std::size_t(u)];
-    const double bx = x_[std::size_t(w)] - x_[std::size_t(g)], by = y_[std::size_t(w)] - y_[std::size_t(g)];
-    const double beta = std::fabs(std::atan2(ax * by - ay * bx, ax * bx + ay * by));
+    const Vertex& b = v_[std::size_t(g)];
+    const Vertex& a = v_[std::size_t(b.prev)];
+    const Vertex& c = v_[std::size_t(b.next)];
+    const double ax = b.x - a.x, ay = b.y - a.y;
+    const double bx = c.x - b.x, by = c.y - b.y;
+    const double beta = turning_angle(std::fabs(ax * by - ay * bx), ax * bx + ay * by);
     const double l1 = std::sqrt(ax * ax + ay * ay) * scale_, l2 = std::sqrt(bx * bx + by * by) * scale_;
     return l1 + l2 > 0 ? beta * l1 * l2 / (l1 + l2) : 0;
+  }
+
+  // atan2(s, c) for s >= 0, in [0, pi], to a relative error of 3e-8 (the
+  // keys are floats; std::atan2 took a seventh of the evolution): Cephes'
+  // atanf polynomial (S. L. Moshier) on [0, tan(pi / 8)] after reduction.
+  static double turning_angle(double s, double c)
+  {
+    const double pi = 3.14159265358979323846;
+    if(s == 0) return c >= 0 ? 0 : pi;
+    const double a = std::fabs(c);
+    const bool swap = s > a;   // atan(t) for t = min / max of (s, a), in [0, 1]
+    double t = swap ? a / s : s / a, base = 0;
+    if(t > 0.41421356237309504880) {
+      base = pi / 4;
+      t = (t - 1) / (t + 1);
+    }
+    const double z = t * t;
+    double r = base + ((((8.05374449538e-2 * z - 1.38776856032e-1) * z + 1.99777106478e-1) * z - 3.33329491539e-1) * z * t + t);
+    if(swap) r = pi / 2 - r;
+    return c < 0 ? pi - r : r;
   }
 
   // a vertex queued again, its neighbours having changed
   void requeue(int g)
   {
-    if(pinned_[std::size_t(g)]) return;
+    if(pinned(g)) return;
     set_key(g, relevance(g));
   }
 
@@ -314,31 +419,28 @@ private:
   double fill_relevance(int r) const
   {
     const int g = first_alive(r);
-    return (std::min)({relevance(g), relevance(next_[std::size_t(g)]), relevance(prev_[std::size_t(g)])});
+    return (std::min)({relevance(g), relevance(v_[std::size_t(g)].next), relevance(v_[std::size_t(g)].prev)});
   }
 
   int first_alive(int r) const
   {
     int g = begin_[std::size_t(r)];
-    while(!alive_[std::size_t(g)]) ++g;
+    while(!alive(g)) ++g;
     return g;
   }
 
   void fill(int r, double k)
   {
     removals_.push_back(Removal{r, -1, -1, -1, k});
-    const int a = first_alive(r), b = next_[std::size_t(a)], c = next_[std::size_t(b)];
-    for(int g : {a, b, c}) {
-      alive_[std::size_t(g)] = 0;
-      --live_;
-    }
+    const int a = first_alive(r), b = v_[std::size_t(a)].next, c = v_[std::size_t(b)].next;
+    for(int g : {a, b, c}) kill(g);
     size_[std::size_t(r)] = 0;
     if(live_ * 4 < grid_capacity_) build_grid();
   }
 
   const Point_2& point(int g) const
   {
-    const int r = ring_of_[std::size_t(g)];
+    const int r = v_[std::size_t(g)].ring();
     return rings_[std::size_t(r)][std::size_t(g - begin_[std::size_t(r)])];
   }
 
@@ -352,9 +454,8 @@ private:
   {
     if constexpr(std::is_floating_point<typename Kernel::FT>::value) {
       typedef typename EK::type::Point_2 P;
-      return typename EK::type().orientation_2_object()(P(x_[std::size_t(a)], y_[std::size_t(a)]),
-                                                        P(x_[std::size_t(b)], y_[std::size_t(b)]),
-                                                        P(x_[std::size_t(c)], y_[std::size_t(c)]));
+      const Vertex &va = v_[std::size_t(a)], &vb = v_[std::size_t(b)], &vc = v_[std::size_t(c)];
+      return typename EK::type().orientation_2_object()(P(va.x, va.y), P(vb.x, vb.y), P(vc.x, vc.y));
     } else {
       return orientation(point(a), point(b), point(c));
     }
@@ -374,28 +475,62 @@ private:
     return orientation(a, b, p) != -o && orientation(b, c, p) != -o && orientation(c, a, p) != -o;
   }
 
+  void kill(int g)
+  {
+    Vertex& x = v_[std::size_t(g)];
+    x.ring_flags &= ~unsigned(ALIVE);
+    grid_[std::size_t(x.slot)].g = -1;
+    --live_;
+  }
+
+  // whether the vertex of row entry p lies in the closed triangle of
+  // vertices (a, b, c), of orientation o (not collinear: see below)
+  bool in_closed_triangle(const Entry& p, int a, int b, int c, Orientation o) const
+  {
+    if constexpr(std::is_floating_point<typename Kernel::FT>::value) {
+      if(o != COLLINEAR) {
+        typedef typename EK::type::Point_2 P;
+        const Vertex &va = v_[std::size_t(a)], &vb = v_[std::size_t(b)], &vc = v_[std::size_t(c)];
+        const P pa(va.x, va.y), pb(vb.x, vb.y), pc(vc.x, vc.y), pp(p.x, p.y);
+        const auto orient = typename EK::type().orientation_2_object();
+        return orient(pa, pb, pp) != -o && orient(pb, pc, pp) != -o && orient(pc, pa, pp) != -o;
+      }
+    }
+    return in_closed_triangle(p.g, a, b, c, o);
+  }
+
   bool removable(int v) const
   {
-    const int u = prev_[std::size_t(v)], w = next_[std::size_t(v)];
-    if(pinned_[std::size_t(u)] || pinned_[std::size_t(v)] || pinned_[std::size_t(w)]) return false;
+    const Vertex& V = v_[std::size_t(v)];
+    const int u = V.prev, w = V.next;
+    const Vertex &U = v_[std::size_t(u)], &W = v_[std::size_t(w)];
+    if((U.ring_flags | V.ring_flags | W.ring_flags) & PINNED) return false;
+#if defined(__GNUC__)
+    // what a removal reads next: the new relevances of u and w and their
+    // places in the queue
+    __builtin_prefetch(&v_[std::size_t(U.prev)]);
+    __builtin_prefetch(&v_[std::size_t(W.next)]);
+    __builtin_prefetch(&pos_[std::size_t(u)]);
+    __builtin_prefetch(&pos_[std::size_t(w)]);
+#endif
     const Orientation o = orientation(u, v, w);
-    if(size_[std::size_t(ring_of_[std::size_t(v)])] == 4 && orientation(u, w, next_[std::size_t(w)]) == COLLINEAR)
+    if(size_[std::size_t(V.ring())] == 4 && orientation(u, w, W.next) == COLLINEAR)
       return false;
     // live vertices in the triangle's bounding box
-    const double x0 = (std::min)({x_[std::size_t(u)], x_[std::size_t(v)], x_[std::size_t(w)]});
-    const double x1 = (std::max)({x_[std::size_t(u)], x_[std::size_t(v)], x_[std::size_t(w)]});
-    const double y0 = (std::min)({y_[std::size_t(u)], y_[std::size_t(v)], y_[std::size_t(w)]});
-    const double y1 = (std::max)({y_[std::size_t(u)], y_[std::size_t(v)], y_[std::size_t(w)]});
+    const double tx[3] = {U.x, V.x, W.x};
+    const double ty[3] = {U.y, V.y, W.y};
+    const int ts[3] = {U.slot, V.slot, W.slot};
+    const double x0 = (std::min)({tx[0], tx[1], tx[2]}), x1 = (std::max)({tx[0], tx[1], tx[2]});
+    const double y0 = (std::min)({ty[0], ty[1], ty[2]}), y1 = (std::max)({ty[0], ty[1], ty[2]});
     int j0 = row_of(y0), j1 = row_of(y1);
     if constexpr(!std::is_floating_point<typename Kernel::FT>::value) {
       // (coordinates rounded from exact numbers: a row more on each side)
       j0 = (std::max)(0, j0 - 1);
       j1 = (std::min)(rows_ - 1, j1 + 1);
     }
-    const double tx[3] = {x_[std::size_t(u)], x_[std::size_t(v)], x_[std::size_t(w)]};
-    const double ty[3] = {y_[std::size_t(u)], y_[std::size_t(v)], y_[std::size_t(w)]};
     const double dy = 1e-6 * row_height_ + 1e-14 * (std::fabs(y0) + std::fabs(y1));
     const double slack = 1e-6 * row_height_ + 1e-14 * (std::fabs(x0) + std::fabs(x1));
+    const Entry* ge = grid_.data();
     for(int j = j0; j <= j1; ++j) {
       // the triangle's x-range within the row's band, both a little wider
       // (rows are found in double; the test itself is exact)
@@ -415,14 +550,27 @@ private:
       if(lo > hi) { lo = x0; hi = x1; }
       lo -= slack;
       hi += slack;
-      const double* gx = grid_x_.data();
-      const std::size_t last = row_start_[std::size_t(j) + 1];
-      for(std::size_t it = std::size_t(std::lower_bound(gx + row_start_[std::size_t(j)], gx + last, lo) - gx);
-          it != last && gx[it] <= hi; ++it) {
-        const int g = grid_g_[it];
-        if(y_[std::size_t(g)] < y0 - dy || y_[std::size_t(g)] > y1 + dy) continue;
-        if(g == u || g == v || g == w || !alive_[std::size_t(g)]) continue;
-        if(in_closed_triangle(g, u, v, w, o)) return false;
+      // the entries of the row with x in [lo, hi]: a contiguous range, found
+      // from the slot of a triangle vertex in the row (its neighbours in
+      // the array are near in the plane), else by a binary search
+      const std::size_t first = row_start_[std::size_t(j)], last = row_start_[std::size_t(j) + 1];
+      std::size_t a = last;
+      for(int e = 0; e < 3; ++e)
+        if(row_of(ty[e]) == j && tx[e] >= lo && tx[e] <= hi) { a = std::size_t(ts[e]); break; }
+      std::size_t b;
+      if(a == last) {
+        a = std::size_t(std::lower_bound(ge + first, ge + last, lo, [](const Entry& t, double x) { return t.x < x; }) - ge);
+        b = a;
+      } else {
+        b = a;
+        while(a > first && ge[a - 1].x >= lo) --a;
+      }
+      while(b != last && ge[b].x <= hi) ++b;
+      for(std::size_t it = a; it != b; ++it) {
+        const Entry& P = ge[it];
+        if(P.y < y0 - dy || P.y > y1 + dy) continue;
+        if(P.g < 0 || P.g == u || P.g == v || P.g == w) continue;
+        if(in_closed_triangle(P, u, v, w, o)) return false;
       }
     }
     return true;
@@ -430,19 +578,20 @@ private:
 
   void remove(int v, double k)
   {
-    const int u = prev_[std::size_t(v)], w = next_[std::size_t(v)];
-    const int r = ring_of_[std::size_t(v)];
+    Vertex& V = v_[std::size_t(v)];
+    const int u = V.prev, w = V.next;
+    const int r = V.ring();
     removals_.push_back(Removal{r, v - begin_[std::size_t(r)], u - begin_[std::size_t(r)], w - begin_[std::size_t(r)], k});
-    alive_[std::size_t(v)] = 0;
-    next_[std::size_t(u)] = w;
-    prev_[std::size_t(w)] = u;
+    kill(v);
+    v_[std::size_t(u)].next = w;
+    v_[std::size_t(w)].prev = u;
     --size_[std::size_t(r)];
-    if(--live_ * 4 < grid_capacity_) build_grid();
+    if(live_ * 4 < grid_capacity_) build_grid();
     if(size_[std::size_t(r)] > 3) {
       requeue(u);
       requeue(w);
     } else if(r > 0 && fill_holes_) {
-      set_key(int(x_.size()) + r, fill_relevance(r));
+      set_key(int(v_.size()) + r, fill_relevance(r));
     }
   }
 
@@ -457,12 +606,12 @@ private:
   {
     double y0 = HUGE_VAL, y1 = -HUGE_VAL, length = 0;
     std::size_t count = 0;
-    for(std::size_t g = 0; g < x_.size(); ++g)
-      if(alive_[g]) {
-        y0 = (std::min)(y0, y_[g]);
-        y1 = (std::max)(y1, y_[g]);
+    for(const Vertex& x : v_)
+      if(x.ring_flags & ALIVE) {
+        y0 = (std::min)(y0, x.y);
+        y1 = (std::max)(y1, x.y);
         // (an estimate of the length, without overflow)
-        length += std::fabs(x_[std::size_t(next_[g])] - x_[g]) + std::fabs(y_[std::size_t(next_[g])] - y_[g]);
+        length += std::fabs(v_[std::size_t(x.next)].x - x.x) + std::fabs(v_[std::size_t(x.next)].y - x.y);
         ++count;
       }
     const double h = (std::max)(y1 - y0, 1e-300);
@@ -472,35 +621,33 @@ private:
     row_height_ = h / double(rows_);
     if(!(row_height_ > 0)) row_height_ = 1;
     row_start_.assign(std::size_t(rows_) + 1, 0);
-    row_.resize(x_.size());
-    for(std::size_t g = 0; g < x_.size(); ++g)
-      if(alive_[g]) {
-        row_[g] = row_of(y_[g]);
-        ++row_start_[std::size_t(row_[g]) + 1];
+    std::vector<int> row(v_.size());
+    for(std::size_t g = 0; g < v_.size(); ++g)
+      if(v_[g].ring_flags & ALIVE) {
+        row[g] = row_of(v_[g].y);
+        ++row_start_[std::size_t(row[g]) + 1];
       }
     for(int r = 0; r < rows_; ++r) row_start_[std::size_t(r) + 1] += row_start_[std::size_t(r)];
-    grid_g_.resize(count);
+    grid_.resize(count);
     std::vector<std::size_t> fill(row_start_.begin(), row_start_.end() - 1);
-    for(std::size_t g = 0; g < x_.size(); ++g)
-      if(alive_[g]) grid_g_[fill[std::size_t(row_[g])]++] = int(g);
+    for(std::size_t g = 0; g < v_.size(); ++g)
+      if(v_[g].ring_flags & ALIVE) grid_[fill[std::size_t(row[g])]++] = Entry{v_[g].x, v_[g].y, int(g)};
     for(int r = 0; r < rows_; ++r)
-      std::sort(grid_g_.begin() + std::ptrdiff_t(row_start_[std::size_t(r)]), grid_g_.begin() + std::ptrdiff_t(row_start_[std::size_t(r) + 1]),
-                [this](int a, int b) { return x_[std::size_t(a)] < x_[std::size_t(b)]; });
-    grid_x_.resize(count);
-    for(std::size_t i = 0; i < count; ++i) grid_x_[i] = x_[std::size_t(grid_g_[i])];
+      std::sort(grid_.begin() + std::ptrdiff_t(row_start_[std::size_t(r)]), grid_.begin() + std::ptrdiff_t(row_start_[std::size_t(r) + 1]),
+                [](const Entry& a, const Entry& b) { return a.x < b.x; });
+    for(std::size_t i = 0; i < count; ++i) v_[std::size_t(grid_[i].g)].slot = int(i);
     grid_capacity_ = count;
   }
 
   const Rings<Point_2>& rings_;
-  std::vector<int> begin_, ring_of_, prev_, next_;
+  std::vector<Vertex> v_;
+  std::vector<int> begin_;
   std::vector<std::size_t> size_;
-  std::vector<double> x_, y_;
-  std::vector<char> alive_, pinned_;
   double scale_ = 1;
-  // The heap: the children of entry i are 4i+1 to 4i+4, 64 bytes that
+  // The heap: the children of entry i are 8i+1 to 8i+8, 128 bytes that
   // start on a cache line (the storage is aligned to 64 bytes and the heap
-  // starts 3 entries in).
-  static constexpr std::size_t heap_pad = 3;
+  // starts 7 entries in).
+  static constexpr std::size_t heap_pad = arity - 1;
   std::vector<Item, boost::alignment::aligned_allocator<Item, 64> > heap_storage_;
   Item* heap_ = nullptr;
   std::size_t heap_size_ = 0;
@@ -512,9 +659,7 @@ private:
   double gy0_ = 0, row_height_ = 1;
   int rows_ = 1;
   std::vector<std::size_t> row_start_;
-  std::vector<int> row_;
-  std::vector<double> grid_x_;   // the rows one after the other: x (searched apart, it is compact) and vertex
-  std::vector<int> grid_g_;
+  std::vector<Entry> grid_;
 };
 
 } // namespace internal
