@@ -1,5 +1,9 @@
 # The medial axis against the Segment_Delaunay_graph_2 oracle.
 pma_add_test_program(test_medial_axis_oracle)
+# Boundary evolution: the curve evolution runs in slabs first from 400
+# vertices on here (32,768 per slab in the library), so that the data shapes
+# test that path and the small random polygons the sequential one.
+target_compile_definitions(test_medial_axis_oracle PRIVATE CGAL_PMA2_EVOLUTION_SLAB_VERTICES=200)
 add_test(NAME oracle_filtered COMMAND test_medial_axis_oracle --only regressions,random,holes,data,touching,union)
 # Degenerate input (integer grids, Hilbert, Koch, regular polygons, glyphs):
 # every exact tie decided, against the oracle.

@@ -1147,11 +1147,13 @@ int test_locale()
 // Runs the discrete curve evolution of `rings` and checks `checks` of its
 // shapes (all of them with 0), with the validator and, with `brute`, the
 // brute-force check.  Returns the number of rings left with more than three
-// vertices, or -1 on a failure.
-int check_evolution(const char* name, const Rings& rings, std::size_t checks, bool brute, bool fill_holes = true)
+// vertices, or -1 on a failure.  `parts`: the slabs of the first phase (0:
+// as the evolution chooses; see Curve_evolution.h).
+int check_evolution(const char* name, const Rings& rings, std::size_t checks, bool brute, bool fill_holes = true,
+                    int parts = 0)
 {
   CGAL::Progressive_medial_axes::internal::Curve_evolution<K> evolution(rings, K(), fill_holes);
-  evolution.run();
+  evolution.run(parts);
   const auto& removals = evolution.removals();
   const std::size_t steps = removals.size();
   std::vector<std::size_t> ks;
@@ -1227,6 +1229,12 @@ int test_curve_evolution()
     const double seconds = seconds_since(start);
     const int larger = check_evolution(name, rings, n < 300 ? 0 : 40, false);
     REQUIRE(larger >= 0);
+    // in 2 and in 5 slabs first (parallel where oneTBB is linked)
+    for(int parts : {2, 5}) {
+      const int in_slabs = check_evolution(name, rings, n < 300 ? 0 : 40, false, true, parts);
+      REQUIRE(in_slabs >= 0);
+      if(std::strncmp(name, "touching/", 9) != 0) REQUIRE(in_slabs == 0);
+    }
     std::printf("  %-30s %7zu vertices %5zu rings: evolution %.3f s, %zu removals, %d rings left above 3 vertices\n",
                 name, n, rings.size(), seconds, timed.removals().size(), larger);
     // without touching rings, the evolution ends with a triangle
@@ -1266,13 +1274,14 @@ int test_curve_evolution()
     const int larger = check_evolution("random", rings, 0, true);
     // as boundary evolution runs it: holes stop at triangles
     const int kept = check_evolution("random, holes kept", rings, 0, true, false);
-    if(larger < 0 || kept < 0) {
+    const int slabs = check_evolution("random, in slabs", rings, 0, true, trial % 3 == 0, 2 + trial % 3);
+    if(larger < 0 || kept < 0 || slabs < 0) {
       std::fprintf(stderr, "  random trial %d failed\n", trial);
       REQUIRE(false);
     }
     left_larger += larger;
   }
-  std::printf("  %d random polygons (%d valid) evolved (holes filled, and kept), every shape valid; %d rings left above 3 vertices\n", tried,
+  std::printf("  %d random polygons (%d valid) evolved (holes filled, and kept; and in 2 to 4 slabs first), every shape valid; %d rings left above 3 vertices\n", tried,
               checked, left_larger);
   REQUIRE(checked > 300);
   return 0;

@@ -24,9 +24,11 @@
 // l1 = |uv| and l2 = |vw| divided by the total length of all rings (so that
 // K does not depend on the scale); a triangular hole has the least relevance
 // of its three vertices.  Relevances are computed in double: they
-// only order the steps (ties by the smaller vertex index).  An indexed
-// 4-ary min-heap orders them, one entry per vertex whose key changes when
-// a neighbour goes: O(n log n) for n vertices, plus the validity checks.
+// only order the steps (ties by the smaller vertex index; relevances
+// closer than a float's precision, 2^-24 of themselves, count as ties).
+// An indexed 8-ary min-heap orders them, one entry per vertex whose key
+// changes when a neighbour goes: O(n log n) for n vertices, plus the
+// validity checks.
 //
 // Validity.  Every shape of the evolution is a valid polygon with holes
 // (OGC): a removal never makes a ring cross or touch itself or another ring,
@@ -60,6 +62,29 @@
 // does not shrink with removals; a uniform grid over the bounding box puts
 // many vertices in a cell where they lie along curves, as outlines' do).  Decisions use the exact
 // orientation of Epick for a kernel of doubles.
+//
+// In parallel.  A removal of v reads and changes only v, its neighbours
+// u and w, and the vertices in the triangle (u, v, w).  The plane is cut
+// into P vertical slabs with as many vertices each (P depends only on the
+// number of vertices n: 1 below 65,536, else the largest power of two
+// not above n / 32,768, at most 16; always 1 for kernels of exact numbers).
+// A vertex is interior to its slab if both its neighbours lie in it; the
+// others (next to an edge that crosses a slab boundary) are frozen.  First,
+// every slab runs the evolution of its interior vertices on its own (own
+// queue, own rows: in parallel with oneTBB, one task per slab), until it has
+// a thirty-second of its vertices left: such a removal reads and writes the
+// slab's vertices only, since its triangle lies in the slab.  The edges
+// that cross slab boundaries never change then (their ends are frozen), so
+// a ring that spans slabs keeps a frozen vertex in each slab it meets; a
+// slab removes a vertex of such a ring only while it has four of the
+// ring's vertices or more (the ring then keeps at least four).  The slabs'
+// removals are merged by relevance (any interleaving is a valid sequence:
+// they touch disjoint vertices), and the evolution goes on over the whole
+// shape, in one queue, as above.  The result differs from the sequential
+// evolution only near slab boundaries, among the removals of the first
+// phase (the fine details); the coarse shapes, the last thirty-second of
+// the evolution and more, come from one queue over the whole shape.  The
+// result is the same whatever the number of threads.
 
 #ifndef CGAL_PROGRESSIVE_MEDIAL_AXIS_2_INTERNAL_CURVE_EVOLUTION_H
 #define CGAL_PROGRESSIVE_MEDIAL_AXIS_2_INTERNAL_CURVE_EVOLUTION_H
@@ -70,6 +95,14 @@
 #include <CGAL/assertions.h>
 
 #include <boost/align/aligned_allocator.hpp>
+
+#if defined(CGAL_LINKED_WITH_TBB) && !defined(CGAL_PMA2_NO_TBB)
+#include <tbb/parallel_for.h>
+#endif
+
+#ifndef CGAL_PMA2_EVOLUTION_SLAB_VERTICES
+#define CGAL_PMA2_EVOLUTION_SLAB_VERTICES 32768
+#endif
 
 #include <algorithm>
 #include <cmath>
@@ -153,70 +186,35 @@ public:
     scale_ = length > 0 ? 1 / length : 1;
   }
 
-  /// Runs the evolution (once).
-  void run()
+  /// Runs the evolution (once).  `parts`: the number of slabs of the
+  /// first phase (0: chosen from the number of vertices, see above).
+  void run(int parts = 0)
   {
     if(ran_) return;
     ran_ = true;
     const int n = int(v_.size());
-    live_ = std::size_t(n);
     pos_.assign(std::size_t(n) + rings_.size(), -1);
-    // every vertex and hole at most once in the heap: no reallocation
-    heap_storage_.resize(std::size_t(n) + rings_.size() + heap_pad);
-    heap_ = heap_storage_.data() + heap_pad;
     removals_.reserve(std::size_t(n));
-    build_grid();
-    for(;;) {
-      std::size_t removed_in_round = 0;
-      // the queue of the round, built at once (Floyd)
-      heap_size_ = 0;
-      for(int g = 0; g < n; ++g) {
-        const Vertex& x = v_[std::size_t(g)];
-        if(x.flags() == ALIVE && size_[std::size_t(x.ring())] > 3) {
-          pos_[std::size_t(g)] = int(heap_size_);
-          heap_[heap_size_++] = Item(relevance(g), g);
-        }
-      }
-      for(int r = 1; r < int(size_.size()) && fill_holes_; ++r)
-        if(size_[std::size_t(r)] == 3) {
-          pos_[std::size_t(n + r)] = int(heap_size_);
-          heap_[heap_size_++] = Item(fill_relevance(r), n + r);
-        }
-      for(std::size_t i = heap_size_ / arity + 1; i-- > 0;)
-        if(i < heap_size_) sift_down(i);
-      while(heap_size_ > 0) {
-        const Item top = pop();
-#if defined(__GNUC__)
-        // the vertex that comes next, while this one is tested
-        if(heap_size_ > 0 && heap_[0].id() < n) __builtin_prefetch(&v_[std::size_t(heap_[0].id())]);
-#endif
-        if(top.id() >= n) {
-          const int r = top.id() - n;
-          if(size_[std::size_t(r)] != 3) continue;
-          fill(r, top.key());
-          ++removed_in_round;
-          continue;
-        }
-        const Vertex& x = v_[std::size_t(top.id())];
-        if((x.ring_flags & ALIVE) && size_[std::size_t(x.ring())] > 3 && removable(top.id())) {
-          remove(top.id(), top.key());
-          ++removed_in_round;
-        }
-#if defined(__GNUC__)
-        // what the test of the next vertex reads: its neighbours and its
-        // place in the rows (while the queue is updated)
-        if(heap_size_ > 0 && heap_[0].id() < n) {
-          const Vertex& y = v_[std::size_t(heap_[0].id())];
-          if(y.ring_flags & ALIVE) {
-            __builtin_prefetch(&v_[std::size_t(y.prev)]);
-            __builtin_prefetch(&v_[std::size_t(y.next)]);
-            __builtin_prefetch(&grid_[std::size_t(y.slot)]);
-          }
-        }
-#endif
-      }
-      if(removed_in_round == 0) break;
-    }
+    int P = parts > 0 ? parts : default_parts(std::size_t(n));
+    if constexpr(!std::is_floating_point<typename Kernel::FT>::value) P = 1;   // (lazy exact numbers are not shared)
+    if(P > 1 && n > 0) run_in_slabs(P);
+    // the whole shape, in rounds
+    for(std::size_t r = 0; r < rings_.size(); ++r) size_[r] = 0;
+    for(const Vertex& x : v_)
+      if(x.ring_flags & ALIVE) ++size_[std::size_t(x.ring())];
+    Part whole(*this, -HUGE_VAL, HUGE_VAL, &removals_);
+    whole.run_rounds();
+  }
+
+  /// The number of slabs of the first phase for n vertices: the largest
+  /// power of two, at most 16, with CGAL_PMA2_EVOLUTION_SLAB_VERTICES
+  /// (32,768; the tests set it lower) vertices per slab or more.
+  static int default_parts(std::size_t n)
+  {
+    const std::size_t per_slab = CGAL_PMA2_EVOLUTION_SLAB_VERTICES;
+    int p = 1;
+    while(p < 16 && std::size_t(2 * p) * per_slab <= n) p *= 2;
+    return p;
   }
 
   const std::vector<Removal>& removals() const { return removals_; }
@@ -254,7 +252,7 @@ private:
   struct Vertex {
     double x, y;
     int prev, next;
-    int slot;          // its place in the rows, while alive
+    int slot;          // its place in the rows of its part, while alive
     unsigned ring_flags;   // ring << FLAG_BITS | flags
     int ring() const { return int(ring_flags >> FLAG_BITS); }
     unsigned flags() const { return ring_flags & ((1u << FLAG_BITS) - 1); }
@@ -268,12 +266,9 @@ private:
   bool alive(int g) const { return (v_[std::size_t(g)].ring_flags & ALIVE) != 0; }
   bool pinned(int g) const { return (v_[std::size_t(g)].ring_flags & PINNED) != 0; }
 
-  // ---- the indexed 8-ary min-heap of vertices (ids < n) and of holes to
-  // fill (id n + ring), by (relevance, id)
-  // An entry packs the relevance, rounded to a float, above the id: one
-  // integer comparison orders by (relevance, id), and the 8 children of an
-  // entry fill one cache line.  (A float keeps the order of relevances
-  // that differ by more than 2^-24 of themselves; closer ones go by id.)
+  // An entry of a queue packs the relevance, rounded to a float, above the
+  // id: one integer comparison orders by (relevance, id), and the 8
+  // children of an entry fill one cache line.
   struct Item {
     std::uint64_t bits;
     Item() = default;
@@ -296,84 +291,473 @@ private:
       return b;
     }
   };
-  static constexpr std::size_t arity = 8;
-  void place(std::size_t i, const Item& it)
+
+  // ---- a part of the plane, x in [x_lo, x_hi) (a slab of the first phase,
+  // or the whole plane): its vertices' queue, rows and removals.  A part
+  // writes only the records of its own vertices.
+  class Part
   {
-    heap_[i] = it;
-    pos_[std::size_t(it.id())] = int(i);
-  }
-  void sift_up(std::size_t i)
-  {
-    const Item it = heap_[i];
-    while(i > 0) {
-      const std::size_t p = (i - 1) / arity;
-      if(!(it < heap_[p])) break;
-      place(i, heap_[p]);
-      i = p;
+  public:
+    Part(Curve_evolution& e, double x_lo, double x_hi, std::vector<Removal>* out)
+      : e_(e), x_lo_(x_lo), x_hi_(x_hi), slab_(x_lo > -HUGE_VAL || x_hi < HUGE_VAL), out_(out)
+    {
+      for(int g = 0; g < int(e_.v_.size()); ++g)
+        if(mine(g) && (e_.v_[std::size_t(g)].ring_flags & ALIVE)) members_.push_back(g);
+      live_ = members_.size();
+      // every vertex (and hole: a slab's have three vertices or more in it)
+      // at most once in the queue: no reallocation
+      heap_storage_.resize(members_.size() + (slab_ ? members_.size() / 3 : e_.rings_.size()) + heap_pad + 1);
+      heap_ = heap_storage_.data() + heap_pad;
     }
-    place(i, it);
-  }
-  void sift_down(std::size_t i)
-  {
-    const Item it = heap_[i];
-    const std::size_t m = heap_size_;
-    for(;;) {
-      const std::size_t c = arity * i + 1;
-      if(c >= m) break;
-      std::size_t best;
-      if(c + arity <= m) {
-        // the least of 8 by a tournament of conditional moves (the
-        // branches of a loop are mispredicted: the children are in random order)
-        const Item* ch = heap_ + c;
-        std::uint64_t v[4];
-        std::size_t k[4];
-        for(std::size_t j = 0; j < 4; ++j) {
-          const bool right = ch[2 * j + 1].bits < ch[2 * j].bits;
-          v[j] = right ? ch[2 * j + 1].bits : ch[2 * j].bits;
-          k[j] = 2 * j + (right ? 1 : 0);
+
+    // The sequential evolution (the whole plane): rounds until one removes nothing.
+    void run_rounds()
+    {
+      const int n = int(e_.v_.size());
+      auto& size = e_.size_;
+      build_grid();
+      for(;;) {
+        std::size_t removed_in_round = 0;
+        // the queue of the round, built at once (Floyd)
+        heap_size_ = 0;
+        for(int g : members_) {
+          const Vertex& x = e_.v_[std::size_t(g)];
+          if(x.flags() == ALIVE && size[std::size_t(x.ring())] > 3) push(g, e_.relevance(g));
         }
-        for(std::size_t j = 0; j < 2; ++j) {
-          const bool right = v[2 * j + 1] < v[2 * j];
-          v[j] = right ? v[2 * j + 1] : v[2 * j];
-          k[j] = right ? k[2 * j + 1] : k[2 * j];
-        }
-        best = c + (v[1] < v[0] ? k[1] : k[0]);
-      } else {
-        best = c;
-        for(std::size_t j = c + 1; j < m; ++j)
-          best = heap_[j] < heap_[best] ? j : best;
+        for(int r = 1; r < int(size.size()) && e_.fill_holes_; ++r)
+          if(size[std::size_t(r)] == 3) push(n + r, e_.fill_relevance(r));
+        heapify();
+        while(heap_size_ > 0)
+          removed_in_round += step();
+        if(removed_in_round == 0) break;
       }
-      if(!(heap_[best] < it)) break;
-      place(i, heap_[best]);
-      i = best;
     }
-    place(i, it);
-  }
-  Item pop()
+
+    // The first phase of a slab: its interior vertices, in one pass, until
+    // a thirty-second of its vertices is left.
+    void run_slab(const std::vector<int>& span_of)
+    {
+      span_of_ = &span_of;
+      for(int g : members_) {
+        const int s = span_of[std::size_t(e_.v_[std::size_t(g)].ring())];
+        if(s >= 0) {
+          if(std::size_t(s) >= span_count_.size()) span_count_.resize(std::size_t(s) + 1, 0);
+          ++span_count_[std::size_t(s)];
+        }
+      }
+      build_grid();
+      heap_size_ = 0;
+      for(int g : members_)
+        if(!e_.pinned(g) && interior(g) && ring_allows(g)) push(g, e_.relevance(g));
+      heapify();
+      const std::size_t stop = (std::max)(std::size_t(3), members_.size() / 32);
+      while(heap_size_ > 0 && live_ > stop) step();
+    }
+
+  private:
+    bool mine(int g) const { const double x = e_.v_[std::size_t(g)].x; return x >= x_lo_ && x < x_hi_; }
+    // both neighbours in the part (always, for the whole plane)
+    bool interior(int g) const
+    {
+      const Vertex& x = e_.v_[std::size_t(g)];
+      return !slab_ || (mine(x.prev) && mine(x.next));
+    }
+    // whether the ring of g may lose a vertex: it has more than three; in a
+    // slab, for a ring that spans slabs, the slab has four of them or more
+    bool ring_allows(int g) const
+    {
+      const int r = e_.v_[std::size_t(g)].ring();
+      if(slab_) {
+        const int s = (*span_of_)[std::size_t(r)];
+        if(s >= 0) return span_count_[std::size_t(s)] >= 4;
+      }
+      return e_.size_[std::size_t(r)] > 3;
+    }
+
+    // One step: pops the least entry and removes its vertex (or fills its
+    // hole) if allowed.  Returns whether it did.
+    std::size_t step()
+    {
+      const int n = int(e_.v_.size());
+      const Item top = pop();
+#if defined(__GNUC__)
+      // the vertex that comes next, while this one is tested
+      if(heap_size_ > 0 && heap_[0].id() < n) __builtin_prefetch(&e_.v_[std::size_t(heap_[0].id())]);
+#endif
+      if(top.id() >= n) {
+        const int r = top.id() - n;
+        if(e_.size_[std::size_t(r)] != 3) return 0;
+        fill(r, top.key());
+        return 1;
+      }
+      std::size_t done = 0;
+      const Vertex& x = e_.v_[std::size_t(top.id())];
+      if((x.ring_flags & ALIVE) && ring_allows(top.id()) && removable(top.id())) {
+        remove(top.id(), top.key());
+        done = 1;
+      }
+#if defined(__GNUC__)
+      // what the test of the next vertex reads: its neighbours and its
+      // place in the rows (while the queue is updated)
+      if(heap_size_ > 0 && heap_[0].id() < n) {
+        const Vertex& y = e_.v_[std::size_t(heap_[0].id())];
+        if(y.ring_flags & ALIVE) {
+          __builtin_prefetch(&e_.v_[std::size_t(y.prev)]);
+          __builtin_prefetch(&e_.v_[std::size_t(y.next)]);
+          __builtin_prefetch(&grid_[std::size_t(y.slot)]);
+        }
+      }
+#endif
+      return done;
+    }
+
+    // ---- the indexed 8-ary min-heap of vertices (ids < n) and of holes to
+    // fill (id n + ring), by (relevance, id); the places of the entries are
+    // in the evolution's pos_ (a part writes those of its own entries)
+    static constexpr std::size_t arity = 8;
+    // The storage is aligned to 64 bytes and the heap starts 7 entries in:
+    // the children of entry i, 8i+1 to 8i+8, are one cache line.
+    static constexpr std::size_t heap_pad = arity - 1;
+    void push(int id, double key)
+    {
+      e_.pos_[std::size_t(id)] = int(heap_size_);
+      heap_[heap_size_++] = Item(key, id);
+    }
+    void heapify()
+    {
+      for(std::size_t i = heap_size_ / arity + 1; i-- > 0;)
+        if(i < heap_size_) sift_down(i);
+    }
+    void place(std::size_t i, const Item& it)
+    {
+      heap_[i] = it;
+      e_.pos_[std::size_t(it.id())] = int(i);
+    }
+    void sift_up(std::size_t i)
+    {
+      const Item it = heap_[i];
+      while(i > 0) {
+        const std::size_t p = (i - 1) / arity;
+        if(!(it < heap_[p])) break;
+        place(i, heap_[p]);
+        i = p;
+      }
+      place(i, it);
+    }
+    void sift_down(std::size_t i)
+    {
+      const Item it = heap_[i];
+      const std::size_t m = heap_size_;
+      for(;;) {
+        const std::size_t c = arity * i + 1;
+        if(c >= m) break;
+        std::size_t best;
+        if(c + arity <= m) {
+          // the least of 8 by a tournament of conditional moves (the
+          // branches of a loop are mispredicted: the children are in random order)
+          const Item* ch = heap_ + c;
+          std::uint64_t v[4];
+          std::size_t k[4];
+          for(std::size_t j = 0; j < 4; ++j) {
+            const bool right = ch[2 * j + 1].bits < ch[2 * j].bits;
+            v[j] = right ? ch[2 * j + 1].bits : ch[2 * j].bits;
+            k[j] = 2 * j + (right ? 1 : 0);
+          }
+          for(std::size_t j = 0; j < 2; ++j) {
+            const bool right = v[2 * j + 1] < v[2 * j];
+            v[j] = right ? v[2 * j + 1] : v[2 * j];
+            k[j] = right ? k[2 * j + 1] : k[2 * j];
+          }
+          best = c + (v[1] < v[0] ? k[1] : k[0]);
+        } else {
+          best = c;
+          for(std::size_t j = c + 1; j < m; ++j)
+            best = heap_[j] < heap_[best] ? j : best;
+        }
+        if(!(heap_[best] < it)) break;
+        place(i, heap_[best]);
+        i = best;
+      }
+      place(i, it);
+    }
+    Item pop()
+    {
+      const Item top = heap_[0];
+      e_.pos_[std::size_t(top.id())] = -1;
+      const Item last = heap_[--heap_size_];
+      if(heap_size_ > 0) {
+        place(0, last);
+        sift_down(0);
+      }
+      return top;
+    }
+    // inserts `id` with `key`, or moves it there if it is queued
+    void set_key(int id, double key)
+    {
+      const int at = e_.pos_[std::size_t(id)];
+      if(at < 0) {
+        heap_[heap_size_] = Item(key, id);
+        e_.pos_[std::size_t(id)] = int(heap_size_);
+        sift_up(heap_size_++);
+        return;
+      }
+      const Item old = heap_[std::size_t(at)];
+      heap_[std::size_t(at)] = Item(key, id);
+      if(heap_[std::size_t(at)] < old) sift_up(std::size_t(at));
+      else sift_down(std::size_t(at));
+    }
+
+    // a vertex queued again, its neighbours having changed
+    void requeue(int g)
+    {
+      if(e_.pinned(g) || !interior(g)) return;
+      set_key(g, e_.relevance(g));
+    }
+
+    void kill(int g)
+    {
+      Vertex& x = e_.v_[std::size_t(g)];
+      x.ring_flags &= ~unsigned(ALIVE);
+      grid_[std::size_t(x.slot)].g = -1;
+      --live_;
+    }
+
+    void fill(int r, double k)
+    {
+      out_->push_back(Removal{r, -1, -1, -1, k});
+      const int a = e_.first_alive(r), b = e_.v_[std::size_t(a)].next, c = e_.v_[std::size_t(b)].next;
+      for(int g : {a, b, c}) kill(g);
+      e_.size_[std::size_t(r)] = 0;
+      if(live_ * 4 < grid_capacity_) build_grid();
+    }
+
+    bool removable(int v) const
+    {
+      const auto& vs = e_.v_;
+      const Vertex& V = vs[std::size_t(v)];
+      const int u = V.prev, w = V.next;
+      const Vertex &U = vs[std::size_t(u)], &W = vs[std::size_t(w)];
+      if((U.ring_flags | V.ring_flags | W.ring_flags) & PINNED) return false;
+#if defined(__GNUC__)
+      // what a removal reads next: the new relevances of u and w and their
+      // places in the queue
+      __builtin_prefetch(&vs[std::size_t(U.prev)]);
+      __builtin_prefetch(&vs[std::size_t(W.next)]);
+      __builtin_prefetch(&e_.pos_[std::size_t(u)]);
+      __builtin_prefetch(&e_.pos_[std::size_t(w)]);
+#endif
+      const Orientation o = e_.orientation(u, v, w);
+      // (a ring that spans slabs has five vertices or more in the first phase)
+      if(e_.size_[std::size_t(V.ring())] == 4 && (!slab_ || (*span_of_)[std::size_t(V.ring())] < 0) &&
+         e_.orientation(u, w, W.next) == COLLINEAR)
+        return false;
+      // live vertices in the triangle's bounding box
+      const double tx[3] = {U.x, V.x, W.x};
+      const double ty[3] = {U.y, V.y, W.y};
+      const int ts[3] = {U.slot, V.slot, W.slot};
+      const double x0 = (std::min)({tx[0], tx[1], tx[2]}), x1 = (std::max)({tx[0], tx[1], tx[2]});
+      const double y0 = (std::min)({ty[0], ty[1], ty[2]}), y1 = (std::max)({ty[0], ty[1], ty[2]});
+      int j0 = row_of(y0), j1 = row_of(y1);
+      if constexpr(!std::is_floating_point<typename Kernel::FT>::value) {
+        // (coordinates rounded from exact numbers: a row more on each side)
+        j0 = (std::max)(0, j0 - 1);
+        j1 = (std::min)(rows_ - 1, j1 + 1);
+      }
+      const double dy = 1e-6 * row_height_ + 1e-14 * (std::fabs(y0) + std::fabs(y1));
+      const double slack = 1e-6 * row_height_ + 1e-14 * (std::fabs(x0) + std::fabs(x1));
+      const Entry* ge = grid_.data();
+      for(int j = j0; j <= j1; ++j) {
+        // the triangle's x-range within the row's band, both a little wider
+        // (rows are found in double; the test itself is exact)
+        const double b0 = (std::max)(y0, gy0_ + double(j) * row_height_ - dy);
+        const double b1 = (std::min)(y1, gy0_ + double(j + 1) * row_height_ + dy);
+        double lo = HUGE_VAL, hi = -HUGE_VAL;
+        for(int e = 0; e < 3 && j0 < j1; ++e) {   // (one row: the whole x-range)
+          const double ax = tx[e], ay = ty[e], bx = tx[(e + 1) % 3], by = ty[(e + 1) % 3];
+          if(ay >= b0 && ay <= b1) { lo = (std::min)(lo, ax); hi = (std::max)(hi, ax); }
+          for(double yb : {b0, b1})
+            if((ay - yb) * (by - yb) <= 0 && ay != by) {
+              const double xb = ax + (bx - ax) * ((yb - ay) / (by - ay));
+              lo = (std::min)(lo, xb);
+              hi = (std::max)(hi, xb);
+            }
+        }
+        if(lo > hi) { lo = x0; hi = x1; }
+        lo -= slack;
+        hi += slack;
+        // the entries of the row with x in [lo, hi]: a contiguous range, found
+        // from the slot of a triangle vertex in the row (its neighbours in
+        // the array are near in the plane), else by a binary search
+        const std::size_t first = row_start_[std::size_t(j)], last = row_start_[std::size_t(j) + 1];
+        std::size_t a = last;
+        for(int e = 0; e < 3; ++e)
+          if(row_of(ty[e]) == j && tx[e] >= lo && tx[e] <= hi) { a = std::size_t(ts[e]); break; }
+        std::size_t b;
+        if(a == last) {
+          a = std::size_t(std::lower_bound(ge + first, ge + last, lo, [](const Entry& t, double x) { return t.x < x; }) - ge);
+          b = a;
+        } else {
+          b = a;
+          while(a > first && ge[a - 1].x >= lo) --a;
+        }
+        while(b != last && ge[b].x <= hi) ++b;
+        for(std::size_t it = a; it != b; ++it) {
+          const Entry& P = ge[it];
+          if(P.y < y0 - dy || P.y > y1 + dy) continue;
+          if(P.g < 0 || P.g == u || P.g == v || P.g == w) continue;
+          if(e_.in_closed_triangle(P, u, v, w, o)) return false;
+        }
+      }
+      return true;
+    }
+
+    void remove(int v, double k)
+    {
+      auto& vs = e_.v_;
+      Vertex& V = vs[std::size_t(v)];
+      const int u = V.prev, w = V.next;
+      const int r = V.ring();
+      const int b = e_.begin_[std::size_t(r)];
+      out_->push_back(Removal{r, v - b, u - b, w - b, k});
+      kill(v);
+      vs[std::size_t(u)].next = w;
+      vs[std::size_t(w)].prev = u;
+      if(live_ * 4 < grid_capacity_) build_grid();
+      const int s = slab_ ? (*span_of_)[std::size_t(r)] : -1;
+      if(s >= 0) {   // a ring that spans slabs
+        if(--span_count_[std::size_t(s)] >= 4) {
+          requeue(u);
+          requeue(w);
+        }
+        return;
+      }
+      std::size_t& size = e_.size_[std::size_t(r)];
+      if(--size > 3) {
+        requeue(u);
+        requeue(w);
+      } else if(r > 0 && e_.fill_holes_) {
+        set_key(int(vs.size()) + r, e_.fill_relevance(r));
+      }
+    }
+
+    // ---- the live vertices of the part in horizontal rows about two edges
+    // high, each row sorted by x (a query scans the triangle's x-range in
+    // each row it crosses); dead vertices are skipped until the next
+    // rebuild.  The row height follows the live edges' mean length, so that
+    // a row holds few vertices where they lie along curves.
+    int row_of(double y) const { return std::clamp(int((y - gy0_) / row_height_), 0, rows_ - 1); }
+
+    void build_grid()
+    {
+      auto& vs = e_.v_;
+      // the live members, compacted
+      std::size_t count = 0;
+      for(int g : members_)
+        if(vs[std::size_t(g)].ring_flags & ALIVE) members_[count++] = g;
+      members_.resize(count);
+      double y0 = HUGE_VAL, y1 = -HUGE_VAL, length = 0;
+      for(int g : members_) {
+        const Vertex& x = vs[std::size_t(g)];
+        y0 = (std::min)(y0, x.y);
+        y1 = (std::max)(y1, x.y);
+        // (an estimate of the length, without overflow)
+        length += std::fabs(vs[std::size_t(x.next)].x - x.x) + std::fabs(vs[std::size_t(x.next)].y - x.y);
+      }
+      const double h = (std::max)(y1 - y0, 1e-300);
+      const double mean = count > 0 ? length / double(count) : h;
+      gy0_ = y0;
+      rows_ = int((std::min)(double(4 * count + 1), (std::min)(1e7, h / (std::max)(2 * mean, h * 1e-7)))) + 1;
+      row_height_ = h / double(rows_);
+      if(!(row_height_ > 0)) row_height_ = 1;
+      row_start_.assign(std::size_t(rows_) + 1, 0);
+      std::vector<int> row(count);
+      for(std::size_t i = 0; i < count; ++i) {
+        row[i] = row_of(vs[std::size_t(members_[i])].y);
+        ++row_start_[std::size_t(row[i]) + 1];
+      }
+      for(int r = 0; r < rows_; ++r) row_start_[std::size_t(r) + 1] += row_start_[std::size_t(r)];
+      grid_.resize(count);
+      std::vector<std::size_t> fill(row_start_.begin(), row_start_.end() - 1);
+      for(std::size_t i = 0; i < count; ++i) {
+        const Vertex& x = vs[std::size_t(members_[i])];
+        grid_[fill[std::size_t(row[i])]++] = Entry{x.x, x.y, members_[i]};
+      }
+      for(int r = 0; r < rows_; ++r)
+        std::sort(grid_.begin() + std::ptrdiff_t(row_start_[std::size_t(r)]), grid_.begin() + std::ptrdiff_t(row_start_[std::size_t(r) + 1]),
+                  [](const Entry& a, const Entry& b) { return a.x < b.x; });
+      for(std::size_t i = 0; i < count; ++i) vs[std::size_t(grid_[i].g)].slot = int(i);
+      grid_capacity_ = count;
+    }
+
+    Curve_evolution& e_;
+    double x_lo_, x_hi_;
+    bool slab_;
+    std::vector<Removal>* out_;
+    std::vector<int> members_;   // the part's vertices (the live ones after a rebuild of the rows)
+    std::size_t live_ = 0, grid_capacity_ = 0;
+    std::vector<Item, boost::alignment::aligned_allocator<Item, 64> > heap_storage_;
+    Item* heap_ = nullptr;
+    std::size_t heap_size_ = 0;
+    double gy0_ = 0, row_height_ = 1;
+    int rows_ = 1;
+    std::vector<std::size_t> row_start_;
+    std::vector<Entry> grid_;
+    const std::vector<int>* span_of_ = nullptr;   // (slabs) the rings that span slabs: their index, or -1
+    std::vector<int> span_count_;                 // (slabs) this slab's vertices of each such ring
+  };
+
+  // The first phase: P slabs of as many vertices each, in parallel; their
+  // removals merged by relevance into removals_.
+  void run_in_slabs(int P)
   {
-    const Item top = heap_[0];
-    pos_[std::size_t(top.id())] = -1;
-    const Item last = heap_[--heap_size_];
-    if(heap_size_ > 0) {
-      place(0, last);
-      sift_down(0);
+    std::vector<double> xs;
+    xs.reserve(v_.size());
+    for(const Vertex& x : v_) xs.push_back(x.x);
+    std::vector<double> cut(std::size_t(P) + 1);
+    cut[0] = -HUGE_VAL;
+    cut[std::size_t(P)] = HUGE_VAL;
+    for(int p = 1; p < P; ++p) {
+      auto m = xs.begin() + std::ptrdiff_t(xs.size() * std::size_t(p) / std::size_t(P));
+      std::nth_element(xs.begin(), m, xs.end());
+      cut[std::size_t(p)] = *m;
     }
-    return top;
-  }
-  // inserts `id` with `key`, or moves it there if it is queued
-  void set_key(int id, double key)
-  {
-    const int at = pos_[std::size_t(id)];
-    if(at < 0) {
-      heap_[heap_size_] = Item(key, id);
-      pos_[std::size_t(id)] = int(heap_size_);
-      sift_up(heap_size_++);
-      return;
+    for(int p = 1; p < P; ++p) cut[std::size_t(p)] = (std::max)(cut[std::size_t(p)], cut[std::size_t(p) - 1]);
+    // the rings that span slabs
+    auto slab_of = [&](double x) { return int(std::upper_bound(cut.begin() + 1, cut.end() - 1, x) - cut.begin()) - 1; };
+    std::vector<int> span_of(rings_.size(), -1);
+    int spans = 0;
+    for(std::size_t r = 0; r < rings_.size(); ++r) {
+      const int b = begin_[r], e = begin_[r + 1];
+      if(b == e) continue;
+      const int s0 = slab_of(v_[std::size_t(b)].x);
+      for(int g = b + 1; g < e; ++g)
+        if(slab_of(v_[std::size_t(g)].x) != s0) {
+          span_of[r] = spans++;
+          break;
+        }
     }
-    const Item old = heap_[std::size_t(at)];
-    heap_[std::size_t(at)] = Item(key, id);
-    if(heap_[std::size_t(at)] < old) sift_up(std::size_t(at));
-    else sift_down(std::size_t(at));
+    std::vector<std::vector<Removal> > out{std::size_t(P)};
+    auto run_slab = [&](std::size_t p) {
+      out[p].reserve(v_.size() / std::size_t(P) + 16);
+      Part part(*this, cut[p], cut[p + 1], &out[p]);
+      part.run_slab(span_of);
+    };
+#if defined(CGAL_LINKED_WITH_TBB) && !defined(CGAL_PMA2_NO_TBB)
+    tbb::parallel_for(std::size_t(0), std::size_t(P), run_slab, tbb::simple_partitioner());
+#else
+    for(std::size_t p = 0; p < std::size_t(P); ++p) run_slab(p);
+#endif
+    // merged by relevance: the least of the slabs' next removals first
+    std::vector<std::size_t> at(std::size_t(P), 0);
+    for(;;) {
+      int best = -1;
+      for(int p = 0; p < P; ++p)
+        if(at[std::size_t(p)] < out[std::size_t(p)].size() &&
+           (best < 0 || out[std::size_t(p)][at[std::size_t(p)]].relevance < out[std::size_t(best)][at[std::size_t(best)]].relevance))
+          best = p;
+      if(best < 0) break;
+      removals_.push_back(out[std::size_t(best)][at[std::size_t(best)]++]);
+    }
   }
 
   double relevance(int g) const
@@ -408,13 +792,6 @@ private:
     return c < 0 ? pi - r : r;
   }
 
-  // a vertex queued again, its neighbours having changed
-  void requeue(int g)
-  {
-    if(pinned(g)) return;
-    set_key(g, relevance(g));
-  }
-
   // the relevance of filling hole r, a triangle: the least of its vertices'
   double fill_relevance(int r) const
   {
@@ -427,15 +804,6 @@ private:
     int g = begin_[std::size_t(r)];
     while(!alive(g)) ++g;
     return g;
-  }
-
-  void fill(int r, double k)
-  {
-    removals_.push_back(Removal{r, -1, -1, -1, k});
-    const int a = first_alive(r), b = v_[std::size_t(a)].next, c = v_[std::size_t(b)].next;
-    for(int g : {a, b, c}) kill(g);
-    size_[std::size_t(r)] = 0;
-    if(live_ * 4 < grid_capacity_) build_grid();
   }
 
   const Point_2& point(int g) const
@@ -475,16 +843,8 @@ private:
     return orientation(a, b, p) != -o && orientation(b, c, p) != -o && orientation(c, a, p) != -o;
   }
 
-  void kill(int g)
-  {
-    Vertex& x = v_[std::size_t(g)];
-    x.ring_flags &= ~unsigned(ALIVE);
-    grid_[std::size_t(x.slot)].g = -1;
-    --live_;
-  }
-
   // whether the vertex of row entry p lies in the closed triangle of
-  // vertices (a, b, c), of orientation o (not collinear: see below)
+  // vertices (a, b, c), of orientation o
   bool in_closed_triangle(const Entry& p, int a, int b, int c, Orientation o) const
   {
     if constexpr(std::is_floating_point<typename Kernel::FT>::value) {
@@ -499,167 +859,15 @@ private:
     return in_closed_triangle(p.g, a, b, c, o);
   }
 
-  bool removable(int v) const
-  {
-    const Vertex& V = v_[std::size_t(v)];
-    const int u = V.prev, w = V.next;
-    const Vertex &U = v_[std::size_t(u)], &W = v_[std::size_t(w)];
-    if((U.ring_flags | V.ring_flags | W.ring_flags) & PINNED) return false;
-#if defined(__GNUC__)
-    // what a removal reads next: the new relevances of u and w and their
-    // places in the queue
-    __builtin_prefetch(&v_[std::size_t(U.prev)]);
-    __builtin_prefetch(&v_[std::size_t(W.next)]);
-    __builtin_prefetch(&pos_[std::size_t(u)]);
-    __builtin_prefetch(&pos_[std::size_t(w)]);
-#endif
-    const Orientation o = orientation(u, v, w);
-    if(size_[std::size_t(V.ring())] == 4 && orientation(u, w, W.next) == COLLINEAR)
-      return false;
-    // live vertices in the triangle's bounding box
-    const double tx[3] = {U.x, V.x, W.x};
-    const double ty[3] = {U.y, V.y, W.y};
-    const int ts[3] = {U.slot, V.slot, W.slot};
-    const double x0 = (std::min)({tx[0], tx[1], tx[2]}), x1 = (std::max)({tx[0], tx[1], tx[2]});
-    const double y0 = (std::min)({ty[0], ty[1], ty[2]}), y1 = (std::max)({ty[0], ty[1], ty[2]});
-    int j0 = row_of(y0), j1 = row_of(y1);
-    if constexpr(!std::is_floating_point<typename Kernel::FT>::value) {
-      // (coordinates rounded from exact numbers: a row more on each side)
-      j0 = (std::max)(0, j0 - 1);
-      j1 = (std::min)(rows_ - 1, j1 + 1);
-    }
-    const double dy = 1e-6 * row_height_ + 1e-14 * (std::fabs(y0) + std::fabs(y1));
-    const double slack = 1e-6 * row_height_ + 1e-14 * (std::fabs(x0) + std::fabs(x1));
-    const Entry* ge = grid_.data();
-    for(int j = j0; j <= j1; ++j) {
-      // the triangle's x-range within the row's band, both a little wider
-      // (rows are found in double; the test itself is exact)
-      const double b0 = (std::max)(y0, gy0_ + double(j) * row_height_ - dy);
-      const double b1 = (std::min)(y1, gy0_ + double(j + 1) * row_height_ + dy);
-      double lo = HUGE_VAL, hi = -HUGE_VAL;
-      for(int e = 0; e < 3 && j0 < j1; ++e) {   // (one row: the whole x-range)
-        const double ax = tx[e], ay = ty[e], bx = tx[(e + 1) % 3], by = ty[(e + 1) % 3];
-        if(ay >= b0 && ay <= b1) { lo = (std::min)(lo, ax); hi = (std::max)(hi, ax); }
-        for(double yb : {b0, b1})
-          if((ay - yb) * (by - yb) <= 0 && ay != by) {
-            const double xb = ax + (bx - ax) * ((yb - ay) / (by - ay));
-            lo = (std::min)(lo, xb);
-            hi = (std::max)(hi, xb);
-          }
-      }
-      if(lo > hi) { lo = x0; hi = x1; }
-      lo -= slack;
-      hi += slack;
-      // the entries of the row with x in [lo, hi]: a contiguous range, found
-      // from the slot of a triangle vertex in the row (its neighbours in
-      // the array are near in the plane), else by a binary search
-      const std::size_t first = row_start_[std::size_t(j)], last = row_start_[std::size_t(j) + 1];
-      std::size_t a = last;
-      for(int e = 0; e < 3; ++e)
-        if(row_of(ty[e]) == j && tx[e] >= lo && tx[e] <= hi) { a = std::size_t(ts[e]); break; }
-      std::size_t b;
-      if(a == last) {
-        a = std::size_t(std::lower_bound(ge + first, ge + last, lo, [](const Entry& t, double x) { return t.x < x; }) - ge);
-        b = a;
-      } else {
-        b = a;
-        while(a > first && ge[a - 1].x >= lo) --a;
-      }
-      while(b != last && ge[b].x <= hi) ++b;
-      for(std::size_t it = a; it != b; ++it) {
-        const Entry& P = ge[it];
-        if(P.y < y0 - dy || P.y > y1 + dy) continue;
-        if(P.g < 0 || P.g == u || P.g == v || P.g == w) continue;
-        if(in_closed_triangle(P, u, v, w, o)) return false;
-      }
-    }
-    return true;
-  }
-
-  void remove(int v, double k)
-  {
-    Vertex& V = v_[std::size_t(v)];
-    const int u = V.prev, w = V.next;
-    const int r = V.ring();
-    removals_.push_back(Removal{r, v - begin_[std::size_t(r)], u - begin_[std::size_t(r)], w - begin_[std::size_t(r)], k});
-    kill(v);
-    v_[std::size_t(u)].next = w;
-    v_[std::size_t(w)].prev = u;
-    --size_[std::size_t(r)];
-    if(live_ * 4 < grid_capacity_) build_grid();
-    if(size_[std::size_t(r)] > 3) {
-      requeue(u);
-      requeue(w);
-    } else if(r > 0 && fill_holes_) {
-      set_key(int(v_.size()) + r, fill_relevance(r));
-    }
-  }
-
-  // ---- the live vertices in horizontal rows about two edges high, each
-  // row sorted by x (a query scans the triangle's x-range in each row it
-  // crosses); dead vertices are skipped until the next rebuild.  The row
-  // height follows the live edges' mean length, so that a row holds few
-  // vertices where they lie along curves.
-  int row_of(double y) const { return std::clamp(int((y - gy0_) / row_height_), 0, rows_ - 1); }
-
-  void build_grid()
-  {
-    double y0 = HUGE_VAL, y1 = -HUGE_VAL, length = 0;
-    std::size_t count = 0;
-    for(const Vertex& x : v_)
-      if(x.ring_flags & ALIVE) {
-        y0 = (std::min)(y0, x.y);
-        y1 = (std::max)(y1, x.y);
-        // (an estimate of the length, without overflow)
-        length += std::fabs(v_[std::size_t(x.next)].x - x.x) + std::fabs(v_[std::size_t(x.next)].y - x.y);
-        ++count;
-      }
-    const double h = (std::max)(y1 - y0, 1e-300);
-    const double mean = count > 0 ? length / double(count) : h;
-    gy0_ = y0;
-    rows_ = int((std::min)(double(4 * count + 1), (std::min)(1e7, h / (std::max)(2 * mean, h * 1e-7)))) + 1;
-    row_height_ = h / double(rows_);
-    if(!(row_height_ > 0)) row_height_ = 1;
-    row_start_.assign(std::size_t(rows_) + 1, 0);
-    std::vector<int> row(v_.size());
-    for(std::size_t g = 0; g < v_.size(); ++g)
-      if(v_[g].ring_flags & ALIVE) {
-        row[g] = row_of(v_[g].y);
-        ++row_start_[std::size_t(row[g]) + 1];
-      }
-    for(int r = 0; r < rows_; ++r) row_start_[std::size_t(r) + 1] += row_start_[std::size_t(r)];
-    grid_.resize(count);
-    std::vector<std::size_t> fill(row_start_.begin(), row_start_.end() - 1);
-    for(std::size_t g = 0; g < v_.size(); ++g)
-      if(v_[g].ring_flags & ALIVE) grid_[fill[std::size_t(row[g])]++] = Entry{v_[g].x, v_[g].y, int(g)};
-    for(int r = 0; r < rows_; ++r)
-      std::sort(grid_.begin() + std::ptrdiff_t(row_start_[std::size_t(r)]), grid_.begin() + std::ptrdiff_t(row_start_[std::size_t(r) + 1]),
-                [](const Entry& a, const Entry& b) { return a.x < b.x; });
-    for(std::size_t i = 0; i < count; ++i) v_[std::size_t(grid_[i].g)].slot = int(i);
-    grid_capacity_ = count;
-  }
-
   const Rings<Point_2>& rings_;
   std::vector<Vertex> v_;
   std::vector<int> begin_;
-  std::vector<std::size_t> size_;
+  std::vector<std::size_t> size_;   // live vertices of each ring (of local rings only, in the first phase)
   double scale_ = 1;
-  // The heap: the children of entry i are 8i+1 to 8i+8, 128 bytes that
-  // start on a cache line (the storage is aligned to 64 bytes and the heap
-  // starts 7 entries in).
-  static constexpr std::size_t heap_pad = arity - 1;
-  std::vector<Item, boost::alignment::aligned_allocator<Item, 64> > heap_storage_;
-  Item* heap_ = nullptr;
-  std::size_t heap_size_ = 0;
-  std::vector<int> pos_;   // the place of each vertex (and hole) in the heap, or -1
+  std::vector<int> pos_;   // the place of each vertex (and hole) in its part's queue, or -1
   std::vector<Removal> removals_;
   bool fill_holes_ = true;
   bool ran_ = false;
-  std::size_t live_ = 0, grid_capacity_ = 0;
-  double gy0_ = 0, row_height_ = 1;
-  int rows_ = 1;
-  std::vector<std::size_t> row_start_;
-  std::vector<Entry> grid_;
 };
 
 } // namespace internal
