@@ -362,7 +362,7 @@ private:
       number_of_steps_ = region_->number_of_steps();
     }
 
-    data_->hds.reserve(2 * data_->points.size() + 16, 4 * data_->points.size() + 16);
+    if(region_) data_->hds.reserve(2 * data_->points.size() + 16, 4 * data_->points.size() + 16);   // (the boundary driver's start() does)
     const auto t1 = std::chrono::steady_clock::now();
     if(region_) {
       region_->start();

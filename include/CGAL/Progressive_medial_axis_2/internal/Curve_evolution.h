@@ -98,6 +98,7 @@
 
 #if defined(CGAL_LINKED_WITH_TBB) && !defined(CGAL_PMA2_NO_TBB)
 #include <tbb/parallel_for.h>
+#include <tbb/parallel_invoke.h>
 #endif
 
 #ifndef CGAL_PMA2_EVOLUTION_SLAB_VERTICES
@@ -197,13 +198,30 @@ public:
     removals_.reserve(std::size_t(n));
     int P = parts > 0 ? parts : default_parts(std::size_t(n));
     if constexpr(!std::is_floating_point<typename Kernel::FT>::value) P = 1;   // (lazy exact numbers are not shared)
-    if(P > 1 && n > 0) run_in_slabs(P);
-    // the whole shape, in rounds
+    std::vector<std::vector<Removal> > slabs;
+    if(P > 1 && n > 0) slabs = run_in_slabs(P);
+    // the whole shape, in rounds (while the slabs' removals are merged)
     for(std::size_t r = 0; r < rings_.size(); ++r) size_[r] = 0;
     for(const Vertex& x : v_)
       if(x.ring_flags & ALIVE) ++size_[std::size_t(x.ring())];
-    Part whole(*this, -HUGE_VAL, HUGE_VAL, &removals_);
-    whole.run_rounds();
+    if(slabs.empty()) {
+      Part whole(*this, -HUGE_VAL, HUGE_VAL, &removals_);
+      whole.run_rounds();
+      return;
+    }
+    std::vector<Removal> rest;
+    auto whole = [&] {
+      Part part(*this, -HUGE_VAL, HUGE_VAL, &rest);
+      part.run_rounds();
+    };
+    auto merge = [&] { merge_by_relevance(slabs); };
+#if defined(CGAL_LINKED_WITH_TBB) && !defined(CGAL_PMA2_NO_TBB)
+    tbb::parallel_invoke(whole, merge);
+#else
+    whole();
+    merge();
+#endif
+    removals_.insert(removals_.end(), rest.begin(), rest.end());
   }
 
   /// The number of slabs of the first phase for n vertices: the largest
@@ -707,8 +725,8 @@ private:
   };
 
   // The first phase: P slabs of as many vertices each, in parallel; their
-  // removals merged by relevance into removals_.
-  void run_in_slabs(int P)
+  // removals, slab by slab.
+  std::vector<std::vector<Removal> > run_in_slabs(int P)
   {
     std::vector<double> xs;
     xs.reserve(v_.size());
@@ -747,7 +765,15 @@ private:
 #else
     for(std::size_t p = 0; p < std::size_t(P); ++p) run_slab(p);
 #endif
-    // merged by relevance: the least of the slabs' next removals first
+    return out;
+  }
+
+  // The slabs' removals into removals_, merged by relevance: the least of
+  // the slabs' next removals first (any interleaving is valid: they touch
+  // disjoint vertices).
+  void merge_by_relevance(const std::vector<std::vector<Removal> >& out)
+  {
+    const int P = int(out.size());
     std::vector<std::size_t> at(std::size_t(P), 0);
     for(;;) {
       int best = -1;
