@@ -23,6 +23,7 @@
 
 #ifdef PMA_TOOL_WITH_GEOS
 #include <geos_c.h>
+#include <dlfcn.h>
 #include <cstdarg>
 #include <cstdio>
 #include <memory>
@@ -30,11 +31,80 @@
 
 namespace pma_tool {
 
-/// True if this build of the tool can repair polygons.
+#ifdef PMA_TOOL_WITH_GEOS
+namespace internal {
+
+// GEOS's C API, loaded when it is first needed (dlopen, dlsym) instead of
+// linked: linking libgeos_c made every run of the tool load and relocate
+// GEOS, about 2 ms of the 6 ms that the tool takes on a triangle, for the
+// few runs that repair.  Null members if GEOS (libgeos_c.so.1) is missing.
+#define PMA_TOOL_GEOS_FUNCTIONS(X) \
+  X(GEOSContext_setErrorMessageHandler_r) \
+  X(GEOSCoordSeq_create_r) \
+  X(GEOSCoordSeq_getSize_r) \
+  X(GEOSCoordSeq_getXY_r) \
+  X(GEOSCoordSeq_setXY_r) \
+  X(GEOSDifference_r) \
+  X(GEOSGeomTypeId_r) \
+  X(GEOSGeom_createCollection_r) \
+  X(GEOSGeom_createLinearRing_r) \
+  X(GEOSGeom_createPolygon_r) \
+  X(GEOSGeom_destroy_r) \
+  X(GEOSGeom_getCoordSeq_r) \
+  X(GEOSGetExteriorRing_r) \
+  X(GEOSGetGeometryN_r) \
+  X(GEOSGetInteriorRingN_r) \
+  X(GEOSGetNumGeometries_r) \
+  X(GEOSGetNumInteriorRings_r) \
+  X(GEOSMakeValidParams_create_r) \
+  X(GEOSMakeValidParams_destroy_r) \
+  X(GEOSMakeValidParams_setKeepCollapsed_r) \
+  X(GEOSMakeValidParams_setMethod_r) \
+  X(GEOSMakeValidWithParams_r) \
+  X(GEOSUnaryUnion_r) \
+  X(GEOS_finish_r) \
+  X(GEOS_init_r) \
+  X(GEOSisEmpty_r) \
+
+struct Geos_api {
+#define PMA_TOOL_GEOS_MEMBER(f) decltype(&::f) f = nullptr;
+  PMA_TOOL_GEOS_FUNCTIONS(PMA_TOOL_GEOS_MEMBER)
+#undef PMA_TOOL_GEOS_MEMBER
+  bool loaded = false;
+
+  static Geos_api load()
+  {
+    Geos_api a;
+    void* lib = dlopen("libgeos_c.so.1", RTLD_NOW | RTLD_LOCAL);
+    if(!lib) lib = dlopen("libgeos_c.so", RTLD_NOW | RTLD_LOCAL);
+    if(!lib) return a;
+    bool all = true;
+#define PMA_TOOL_GEOS_LOAD(f) \
+  a.f = reinterpret_cast<decltype(&::f)>(dlsym(lib, #f)); \
+  all = all && a.f != nullptr;
+    PMA_TOOL_GEOS_FUNCTIONS(PMA_TOOL_GEOS_LOAD)
+#undef PMA_TOOL_GEOS_LOAD
+    a.loaded = all;
+    return a;
+  }
+};
+
+// (loaded once, by the first caller; thread-safe)
+inline const Geos_api& geos()
+{
+  static const Geos_api api = Geos_api::load();
+  return api;
+}
+
+} // namespace internal
+#endif
+
+/// True if this build of the tool can repair polygons (GEOS 3.10 or
+/// later was found when it was built, and libgeos_c can be loaded now).
 inline bool can_repair()
 {
 #ifdef PMA_TOOL_WITH_GEOS
-  return true;
+  return internal::geos().loaded;
 #else
   return false;
 #endif
@@ -47,11 +117,11 @@ namespace internal {
 class Geos_context
 {
 public:
-  Geos_context() : h_(GEOS_init_r())
+  Geos_context() : h_(geos().GEOS_init_r())
   {
-    GEOSContext_setErrorMessageHandler_r(h_, &Geos_context::on_error, &error_);
+    geos().GEOSContext_setErrorMessageHandler_r(h_, &Geos_context::on_error, &error_);
   }
-  ~Geos_context() { GEOS_finish_r(h_); }
+  ~Geos_context() { geos().GEOS_finish_r(h_); }
   Geos_context(const Geos_context&) = delete;
   Geos_context& operator=(const Geos_context&) = delete;
   GEOSContextHandle_t handle() const { return h_; }
@@ -128,62 +198,62 @@ geos_make_valid(const std::vector<CGAL::Progressive_medial_axes::Rings<Point_2> 
     return Input_error(std::string("repair failed: ") + what + (context.error().empty() ? "" : ": " + context.error()));
   };
   auto ring = [&](const std::vector<Point_2>& r) {
-    GEOSCoordSequence* seq = GEOSCoordSeq_create_r(h, static_cast<unsigned>(r.size() + 1), 2);
+    GEOSCoordSequence* seq = geos().GEOSCoordSeq_create_r(h, static_cast<unsigned>(r.size() + 1), 2);
     if(!seq) throw fail("GEOSCoordSeq_create");
     for(std::size_t i = 0; i <= r.size(); ++i) {
       const Point_2& p = r[i % r.size()];
-      GEOSCoordSeq_setXY_r(h, seq, static_cast<unsigned>(i), CGAL::to_double(p.x()), CGAL::to_double(p.y()));
+      geos().GEOSCoordSeq_setXY_r(h, seq, static_cast<unsigned>(i), CGAL::to_double(p.x()), CGAL::to_double(p.y()));
     }
-    GEOSGeometry* g = GEOSGeom_createLinearRing_r(h, seq);   // takes the sequence
+    GEOSGeometry* g = geos().GEOSGeom_createLinearRing_r(h, seq);   // takes the sequence
     if(!g) throw fail("GEOSGeom_createLinearRing");
     return g;
   };
-  auto destroy = [h](GEOSGeometry* g) { GEOSGeom_destroy_r(h, g); };
+  auto destroy = [h](GEOSGeometry* g) { geos().GEOSGeom_destroy_r(h, g); };
   typedef std::unique_ptr<GEOSGeometry, decltype(destroy)> Owned;
   // the polygons made valid, and their union if `unite`
   auto make_valid = [&](const std::vector<CGAL::Progressive_medial_axes::Rings<Point_2> >& polygons, bool unite) {
-    GEOSMakeValidParams* p = GEOSMakeValidParams_create_r(h);
-    GEOSMakeValidParams_setMethod_r(h, p, GEOS_MAKE_VALID_STRUCTURE);
-    GEOSMakeValidParams_setKeepCollapsed_r(h, p, 0);
+    GEOSMakeValidParams* p = geos().GEOSMakeValidParams_create_r(h);
+    geos().GEOSMakeValidParams_setMethod_r(h, p, GEOS_MAKE_VALID_STRUCTURE);
+    geos().GEOSMakeValidParams_setKeepCollapsed_r(h, p, 0);
     std::vector<Owned> made;
     for(const auto& rings : polygons) {
       std::vector<GEOSGeometry*> holes;
       GEOSGeometry* shell = ring(rings[0]);
       for(std::size_t r = 1; r < rings.size(); ++r) holes.push_back(ring(rings[r]));
-      Owned polygon(GEOSGeom_createPolygon_r(h, shell, holes.data(), static_cast<unsigned>(holes.size())), destroy);
+      Owned polygon(geos().GEOSGeom_createPolygon_r(h, shell, holes.data(), static_cast<unsigned>(holes.size())), destroy);
       if(!polygon) throw fail("GEOSGeom_createPolygon");
-      made.emplace_back(GEOSMakeValidWithParams_r(h, polygon.get(), p), destroy);
+      made.emplace_back(geos().GEOSMakeValidWithParams_r(h, polygon.get(), p), destroy);
       if(!made.back()) {
-        GEOSMakeValidParams_destroy_r(h, p);
+        geos().GEOSMakeValidParams_destroy_r(h, p);
         throw fail("GEOSMakeValid");
       }
     }
-    GEOSMakeValidParams_destroy_r(h, p);
+    geos().GEOSMakeValidParams_destroy_r(h, p);
     if(!unite) return std::move(made[0]);
     std::vector<GEOSGeometry*> parts;
     for(Owned& g : made) parts.push_back(g.release());   // the collection takes them
-    Owned all(GEOSGeom_createCollection_r(h, GEOS_GEOMETRYCOLLECTION, parts.data(), static_cast<unsigned>(parts.size())),
+    Owned all(geos().GEOSGeom_createCollection_r(h, GEOS_GEOMETRYCOLLECTION, parts.data(), static_cast<unsigned>(parts.size())),
               destroy);
     if(!all) throw fail("GEOSGeom_createCollection");
-    Owned u(GEOSUnaryUnion_r(h, all.get()), destroy);
+    Owned u(geos().GEOSUnaryUnion_r(h, all.get()), destroy);
     if(!u) throw fail("GEOSUnaryUnion");
     return u;
   };
   Owned valid = make_valid(input, union_all);
   if(!subtract.empty()) {
     Owned minus = make_valid(subtract, true);
-    valid.reset(GEOSDifference_r(h, valid.get(), minus.get()));
+    valid.reset(geos().GEOSDifference_r(h, valid.get(), minus.get()));
     if(!valid) throw fail("GEOSDifference");
   }
 
   std::vector<CGAL::Progressive_medial_axes::Rings<Point_2> > out;
   auto read_ring = [&](const GEOSGeometry* g, std::vector<Point_2>& r) {
-    const GEOSCoordSequence* seq = GEOSGeom_getCoordSeq_r(h, g);
+    const GEOSCoordSequence* seq = geos().GEOSGeom_getCoordSeq_r(h, g);
     unsigned n = 0;
-    if(!seq || !GEOSCoordSeq_getSize_r(h, seq, &n)) throw fail("GEOSGeom_getCoordSeq");
+    if(!seq || !geos().GEOSCoordSeq_getSize_r(h, seq, &n)) throw fail("GEOSGeom_getCoordSeq");
     for(unsigned i = 0; i + 1 < n; ++i) {   // the closing point is dropped
       double x = 0, y = 0;
-      GEOSCoordSeq_getXY_r(h, seq, i, &x, &y);
+      geos().GEOSCoordSeq_getXY_r(h, seq, i, &x, &y);
       r.push_back(Point_2(x, y));
     }
   };
@@ -193,21 +263,21 @@ geos_make_valid(const std::vector<CGAL::Progressive_medial_axes::Rings<Point_2> 
   while(!stack.empty()) {
     const GEOSGeometry* g = stack.back();
     stack.pop_back();
-    const int type = GEOSGeomTypeId_r(h, g);
+    const int type = geos().GEOSGeomTypeId_r(h, g);
     if(type == GEOS_POLYGON) {
-      if(!GEOSisEmpty_r(h, g)) polygons.push_back(g);
+      if(!geos().GEOSisEmpty_r(h, g)) polygons.push_back(g);
     } else if(type == GEOS_MULTIPOLYGON || type == GEOS_GEOMETRYCOLLECTION) {
-      const int n = GEOSGetNumGeometries_r(h, g);
-      for(int i = n - 1; i >= 0; --i) stack.push_back(GEOSGetGeometryN_r(h, g, i));
+      const int n = geos().GEOSGetNumGeometries_r(h, g);
+      for(int i = n - 1; i >= 0; --i) stack.push_back(geos().GEOSGetGeometryN_r(h, g, i));
     }
   }
   for(const GEOSGeometry* g : polygons) {
     out.emplace_back(1);
-    read_ring(GEOSGetExteriorRing_r(h, g), out.back()[0]);
-    const int n = GEOSGetNumInteriorRings_r(h, g);
+    read_ring(geos().GEOSGetExteriorRing_r(h, g), out.back()[0]);
+    const int n = geos().GEOSGetNumInteriorRings_r(h, g);
     for(int i = 0; i < n; ++i) {
       out.back().emplace_back();
-      read_ring(GEOSGetInteriorRingN_r(h, g, i), out.back().back());
+      read_ring(geos().GEOSGetInteriorRingN_r(h, g, i), out.back().back());
     }
   }
   return out;
