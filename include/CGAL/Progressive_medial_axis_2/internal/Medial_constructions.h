@@ -23,7 +23,9 @@
 
 #include <cmath>
 #include <cstdint>
+#include <cstdlib>
 #include <cstring>
+#include <memory>
 #include <type_traits>
 #include <vector>
 
@@ -158,19 +160,27 @@ Line_nt<NT> oriented_line(const Site_nt<NT>& s)
 /// The interval stage's lines of segments whose end points are doubles,
 /// kept in a small direct-mapped table per thread (a hit costs a hash and
 /// four comparisons; the line costs an interval square root and division).
+/// The table is zeroed memory from calloc (an entry of zeros is unused): the
+/// system maps its pages as they are first written, so a small polygon does
+/// not pay for the whole table (value-initialising it cost a tenth of a
+/// millisecond at the first call of every thread).
 template <>
 struct Oriented_line_hook<Interval_nt<false> > {
   typedef Interval_nt<false> I;
+  struct Entry {   // (plain data: all zeros is an unused entry)
+    double ax, ay, bx, by;
+    double line[6];   // nx, ny, k: inf and sup of each
+    std::uint64_t used;
+  };
+  struct Free {
+    void operator()(Entry* p) const { std::free(p); }
+  };
   static Line_nt<I> apply(const Site_nt<I>& s)
   {
     if(!(s.ax.is_point() && s.ay.is_point() && s.bx.is_point() && s.by.is_point()))
       return compute_oriented_line(s);
-    struct Entry {
-      double ax = 0, ay = 0, bx = 0, by = 0;
-      bool used = false;
-      Line_nt<I> line;
-    };
-    static thread_local std::vector<Entry> table(4096);
+    static thread_local std::unique_ptr<Entry, Free> table(static_cast<Entry*>(std::calloc(4096, sizeof(Entry))));
+    if(!table) return compute_oriented_line(s);
     const double c[4] = {s.ax.inf(), s.ay.inf(), s.bx.inf(), s.by.inf()};
     std::uint64_t h = 0x9e3779b97f4a7c15ull;
     for(double x : c) {
@@ -178,13 +188,16 @@ struct Oriented_line_hook<Interval_nt<false> > {
       std::memcpy(&b, &x, sizeof b);
       h = (h ^ b) * 0xff51afd7ed558ccdull;
     }
-    Entry& e = table[std::size_t(h >> 52)];
+    Entry& e = table.get()[std::size_t(h >> 52)];
     if(e.used && e.ax == c[0] && e.ay == c[1] && e.bx == c[2] && e.by == c[3])
-      return e.line;
-    e.line = compute_oriented_line(s);
+      return Line_nt<I>{I(e.line[0], e.line[1]), I(e.line[2], e.line[3]), I(e.line[4], e.line[5])};
+    const Line_nt<I> line = compute_oriented_line(s);
     e.ax = c[0]; e.ay = c[1]; e.bx = c[2]; e.by = c[3];
-    e.used = true;
-    return e.line;
+    e.line[0] = line.nx.inf(); e.line[1] = line.nx.sup();
+    e.line[2] = line.ny.inf(); e.line[3] = line.ny.sup();
+    e.line[4] = line.k.inf(); e.line[5] = line.k.sup();
+    e.used = 1;
+    return line;
   }
 };
 
