@@ -20,7 +20,11 @@ make_glyphs.py (several fonts, data/glyphs/), then measures for every shape:
   tool, e.g. an older commit, under the time limit.
 
 Prints a Markdown table (and writes it to --out).  Glyphs are summarised per
-font (count, total and largest time).  Times are seconds.
+font: the whole process on all glyphs of the font in one file (a
+GEOMETRYCOLLECTION, one axis per glyph), Epick the same, against the sum of
+SDG's construction times over the glyphs; and in-process, glyph by glyph,
+the one-shot on one thread against SDG (bench_time, same run): the sum and
+the worst ratio.  Times are seconds.
 """
 
 import argparse
@@ -135,32 +139,46 @@ def main():
         subprocess.run([sys.executable, os.path.join(ROOT, "benchmark/Progressive_medial_axis_2/make_glyphs.py"),
                         glyphs, "--fonts", FONTS], check=True, stdout=subprocess.DEVNULL)
         lines.append("")
-        lines.append("| glyph font | glyphs | vertices (max) | ours total | ours max | Epick total | SDG total | SDG max | ours / SDG, max over glyphs | nested decisions |")
+        lines.append("| glyph font | glyphs | vertices (max) | ours, one process | Epick, one process | SDG, sum of glyphs | ours / SDG | ours in-process, sum | in-process ours / SDG, worst glyph | nested decisions |")
         lines.append("|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|")
         by_font = {}
         for f in sorted(os.listdir(glyphs)):
-            if f.endswith(".wkt"):
+            if f.endswith(".wkt") and not f.endswith("_all.wkt"):
                 by_font.setdefault(f.split("_")[0], []).append(os.path.join(glyphs, f))
         for font, files in sorted(by_font.items()):
-            tot = mx = etot = stot = smx = worst = 0.0
-            vmax = nested = 0
+            # all glyphs of the font in one file, as a CAM user hands a
+            # font's outlines to the tool: one process, one axis per glyph
+            # (ids p<k>:...), in parallel over the glyphs
+            polygons = []
             for path in files:
-                t, _ = median_process([TOOL, path], 1, a.timeout)
-                s = stats_of(median_process([TOOL, "--stats", path], 1, a.timeout)[1])
-                e, _ = median_process([TOOL, "--traits", "epick", path], 1, a.timeout)
-                g = sdg_time(path, 1, a.timeout)
-                t = t if t is not None else a.timeout
-                tot += t
-                mx = max(mx, t)
-                etot += e or 0
-                stot += g or 0
-                smx = max(smx, g or 0)
-                if g:
-                    worst = max(worst, t / g)
-                vmax = max(vmax, int(s.get("input_vertices", 0)))
-                nested += int(s.get("filter_exact_evaluations", 0)) + int(s.get("filter_exact_comparisons", 0))
-            row = "| %s | %d | %d | %.3g | %.3g | %.3g | %.3g | %.3g | %.2f | %d |" % (
-                font, len(files), vmax, tot, mx, etot, stot, smx, worst, nested)
+                with open(path) as g:
+                    polygons.append(g.read().strip())
+            whole = os.path.join(glyphs, font + "_all.wkt")
+            with open(whole, "w") as g:
+                g.write("GEOMETRYCOLLECTION (" + ", ".join(polygons) + ")\n")
+            ours, _ = median_process([TOOL, whole], a.runs, a.timeout)
+            epick, _ = median_process([TOOL, "--traits", "epick", whole], a.runs, a.timeout)
+            s = stats_of(median_process([TOOL, "--stats", whole], 1, a.timeout)[1])
+            nested = int(s.get("filter_exact_evaluations", 0)) + int(s.get("filter_exact_comparisons", 0))
+            # in-process, glyph by glyph: the one-shot on one thread and SDG's
+            # construction, same bench_time run
+            p = subprocess.run([BENCH_TIME, "--runs", str(a.runs), "--timeout", str(a.timeout), "--no-baseline",
+                                "--methods", "pma_oneshot_1,sdg"] + files,
+                               stdout=subprocess.PIPE, stderr=subprocess.DEVNULL, text=True)
+            per = {}
+            vmax = 0
+            for line in p.stdout.splitlines()[1:]:
+                f = line.split("\t")
+                if len(f) > 4:
+                    per.setdefault(f[0], {})[f[3]] = float(f[4])
+                    vmax = max(vmax, int(f[1]))
+            sdg_sum = sum(v.get("sdg", 0) for v in per.values())
+            ours_sum = sum(v.get("pma_oneshot_1", 0) for v in per.values())
+            worst = max((v["pma_oneshot_1"] / v["sdg"] for v in per.values()
+                         if v.get("sdg", 0) > 0 and "pma_oneshot_1" in v), default=0)
+            row = "| %s | %d | %d | %s | %s | %.3g | %s | %.3g | %.2f | %d |" % (
+                font, len(files), vmax, fmt(ours, a.timeout), fmt(epick, a.timeout), sdg_sum,
+                "%.2f" % (ours / sdg_sum) if ours and sdg_sum else "-", ours_sum, worst, nested)
             print(row, flush=True)
             lines.append(row)
 
