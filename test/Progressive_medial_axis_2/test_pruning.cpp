@@ -7,7 +7,8 @@
 // Shapes with K arms keep exactly K ends, with and without boundary noise;
 // the centerline of a noisy meandering band follows its known centre line;
 // the invariants of the grassfire transform hold on random polygons with
-// holes.  (The maximum inscribed circle is compared with the oracle's
+// holes, and the linear algorithm gives the fire of an event simulation.
+// (The maximum inscribed circle is compared with the oracle's
 // branch points in test_medial_axis_oracle, on every shape it runs.)
 
 #include <CGAL/Progressive_medial_axis_2.h>
@@ -23,6 +24,9 @@
 #include <cmath>
 #include <cstdint>
 #include <iostream>
+#include <limits>
+#include <map>
+#include <queue>
 #include <random>
 #include <string>
 #include <vector>
@@ -197,6 +201,55 @@ void test_braided()
   CHECK(above && below, "braided river: the centerline misses a channel");
 }
 
+// The extended distance function as the definition states it: an event
+// simulation of the fire in the order of time (a priority queue of the
+// fronts' arrivals at vertices), through the public handles only.  Returns
+// the time of every vertex by id number, and the latest burning time.
+std::pair<std::map<std::size_t, double>, double> reference_fire(const MA& ma)
+{
+  const double inf = std::numeric_limits<double>::infinity();
+  struct Arc { std::size_t u, w; double length, start[2]; bool arrived[2]; };
+  std::vector<Arc> arcs;
+  std::map<std::size_t, std::vector<int> > at;   // the curves at each vertex
+  for(const auto& e : ma.edges()) {
+    arcs.push_back(Arc{e.source().id_number(), e.target().id_number(), e.length(), {inf, inf}, {false, false}});
+    at[arcs.back().u].push_back(int(arcs.size()) - 1);
+    at[arcs.back().w].push_back(int(arcs.size()) - 1);
+  }
+  std::map<std::size_t, double> time;
+  std::map<std::size_t, int> arrived;
+  double last = 0;
+  typedef std::pair<double, std::pair<int, int> > Event;   // time, (curve, end reached)
+  std::priority_queue<Event, std::vector<Event>, std::greater<Event> > q;
+  auto ignite = [&](std::size_t v, double t) {
+    time[v] = t;
+    last = (std::max)(last, t);
+    for(int i : at[v]) {
+      Arc& a = arcs[std::size_t(i)];
+      const int end = a.u == v ? 0 : 1;
+      if(a.arrived[end]) continue;
+      a.start[end] = t;
+      if(a.start[1 - end] == inf) q.push(Event(t + a.length, std::make_pair(i, 1 - end)));
+      else last = (std::max)(last, 0.5 * (a.start[0] + a.start[1] + a.length));
+      break;
+    }
+  };
+  for(const auto& x : at)
+    if(x.second.size() == 1) ignite(x.first, 0);
+  while(!q.empty()) {
+    const Event e = q.top();
+    q.pop();
+    Arc& a = arcs[std::size_t(e.second.first)];
+    const int end = e.second.second;
+    if(a.start[end] != inf) continue;   // the fronts met inside the curve
+    a.arrived[end] = true;
+    const std::size_t v = end == 0 ? a.u : a.w;
+    if(a.u == a.w) a.arrived[1 - end] = true;
+    if(time.count(v) == 0 && ++arrived[v] + 1 >= int(at[v].size())) ignite(v, e.first);
+  }
+  return {time, last};
+}
+
 // The invariants of the grassfire transform, and pruning keeps the topology,
 // on random polygons with holes.
 void test_invariants()
@@ -208,6 +261,18 @@ void test_invariants()
     const CGAL::Medial_axis_significance_2<K> sig(ma);
     const std::string what = "random polygon " + std::to_string(seed);
     const int holes = int(r.size()) - 1;
+    // the linear algorithm gives the times of the event simulation
+    const auto ref = reference_fire(ma);
+    const double tol = 1e-9 * (1 + ref.second);
+    CHECK(std::fabs(sig.last_burning_time() - ref.second) <= tol,
+          what << ": latest burning time " << sig.last_burning_time() << ", by simulation " << ref.second);
+    for(const auto& v : ma.vertices()) {
+      const auto it = ref.first.find(v.id_number());
+      const double expected = it == ref.first.end() ? std::numeric_limits<double>::infinity() : it->second;
+      const double got = sig.extended_distance(v);
+      CHECK(got == expected || std::fabs(got - expected) <= tol,
+            what << ": a vertex burns at " << got << ", by simulation at " << expected);
+    }
     for(const auto& v : ma.vertices()) {
       const double t = sig.extended_distance(v);
       CHECK(sig.erosion_thickness(v) >= 0, what << ": negative erosion thickness");

@@ -20,12 +20,18 @@
 #include <CGAL/number_utils.h>
 #include <CGAL/enum.h>
 
+#if defined(CGAL_LINKED_WITH_TBB) && !defined(CGAL_PMA2_NO_TBB)
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+#endif
+
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstddef>
 #include <functional>
 #include <iterator>
+#include <limits>
 #include <memory>
 #include <string>
 #include <utility>
@@ -37,6 +43,21 @@ template <class K> class Medial_axis_2;
 template <class Traits_> class Progressive_medial_axis_2;
 namespace Progressive_medial_axes {
 namespace internal {
+// Calls f(begin, end) on blocks that cover [0, n), in parallel where TBB is
+// linked (f must only write what its block owns).
+template <class F>
+void parallel_blocks(std::size_t n, const F& f)
+{
+#if defined(CGAL_LINKED_WITH_TBB) && !defined(CGAL_PMA2_NO_TBB)
+  if(n > 16384) {
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 8192),
+                      [&](const tbb::blocked_range<std::size_t>& r) { f(r.begin(), r.end()); });
+    return;
+  }
+#endif
+  f(std::size_t(0), n);
+}
+
 // Builds a Medial_axis_2 from the data that a driver filled.
 struct Medial_axis_access {
   template <class K, class Data>
@@ -317,6 +338,7 @@ public:
   private:
     friend class Medial_axis_2;
     Vertex_handle(const Data* d, int v) : d_(d), v_(representative(d, v)) {}
+    Vertex_handle(const Data* d, int v, int /* v is a representative */) : d_(d), v_(v) {}
     const Data* d_ = nullptr;
     int v_ = -1;
   };
@@ -487,6 +509,66 @@ public:
   // by them).
   std::size_t vertex_id_bound() const { return d_ ? hds().vertex_capacity() : 0; }
   std::size_t halfedge_id_bound() const { return d_ ? hds().halfedge_capacity() : 0; }
+
+  // The handles of id numbers: `v` is the id_number() of a Vertex_handle of
+  // this axis, `h` that of a Halfedge_handle.
+  Vertex_handle vertex_of_id(std::size_t v) const { return Vertex_handle(d_.get(), int(v), 0); }
+  Halfedge_handle halfedge_of_id(std::size_t h) const { return Halfedge_handle(d_.get(), int(h)); }
+
+  // The medial curves as a graph, for the analysis functions (significance,
+  // pruning), read from the arrays instead of through handles: `curves`
+  // gets the id number of the half-edge of every medial curve, in the order
+  // of edges(), `ends` the id numbers of its source and target vertices,
+  // `lengths` its length().  The passes run in parallel where TBB is linked.
+  void medial_curve_graph(std::vector<int>& curves, std::vector<std::array<int, 2> >& ends,
+                          std::vector<double>& lengths) const
+  {
+    curves.clear();
+    ends.clear();
+    lengths.clear();
+    if(!d_) return;
+    const Data* d = d_.get();
+    const std::size_t pairs = hds().halfedge_capacity() / 2;
+    // 1: a medial curve, 2: an edge of length zero (its ends are one point)
+    std::vector<char> kind(pairs);
+    Progressive_medial_axes::internal::parallel_blocks(pairs, [&](std::size_t b, std::size_t e) {
+      for(std::size_t i = b; i < e; ++i) {
+        const int h = int(2 * i);
+        kind[i] = keep_edge(d, h) ? 1 : (!d->hds.is_deleted(h) && d->hds.is_zero_length(h) ? 2 : 0);
+      }
+    });
+    std::vector<int> zero_length_ends;
+    std::size_t m = 0;
+    for(std::size_t i = 0; i < pairs; ++i) {
+      if(kind[i] == 1) ++m;
+      else if(kind[i] == 2) {
+        zero_length_ends.push_back(d->hds.source(int(2 * i)));
+        zero_length_ends.push_back(d->hds.target(int(2 * i)));
+      }
+    }
+    curves.reserve(m);
+    for(std::size_t i = 0; i < pairs; ++i)
+      if(kind[i] == 1) curves.push_back(int(2 * i));
+    // the representatives of the vertices at edges of length zero (rare);
+    // every other vertex stands for itself
+    std::vector<std::pair<int, int> > rep;
+    for(int v : zero_length_ends) rep.emplace_back(v, representative(d, v));
+    std::sort(rep.begin(), rep.end());
+    auto representative_of = [&](int v) {
+      if(rep.empty()) return v;
+      const auto it = std::lower_bound(rep.begin(), rep.end(), std::make_pair(v, (std::numeric_limits<int>::min)()));
+      return it != rep.end() && it->first == v ? it->second : v;
+    };
+    ends.resize(m);
+    lengths.resize(m);
+    Progressive_medial_axes::internal::parallel_blocks(m, [&](std::size_t b, std::size_t e) {
+      for(std::size_t k = b; k < e; ++k) {
+        const int h = curves[k];
+        ends[k] = {{representative_of(d->hds.source(h)), representative_of(d->hds.target(h))}};
+        lengths[k] = curve(d, h).length();
+      }
+    });
+  }
   /// \endcond
 
   std::size_t number_of_vertices() const { return count(vertices()); }

@@ -266,7 +266,7 @@ Medial_axis_centerline_2<K> medial_axis_centerline_2(const Pruned_medial_axis_2<
   // the graph: a node per kept vertex and per cut end
   std::vector<int> vertex_node(pruned.medial_axis().vertex_id_bound(), -1);
   int n_nodes = 0;
-  struct Link { int a, b; };
+  struct Link { int a, b; double length; };
   std::vector<Link> links;
   links.reserve(curves.size());
   auto node_of_vertex = [&](const typename Medial_axis_2<K>::Vertex_handle& v) {
@@ -277,13 +277,32 @@ Medial_axis_centerline_2<K> medial_axis_centerline_2(const Pruned_medial_axis_2<
   for(const Curve& c : curves) {
     const int a = c.cut_at_begin() ? n_nodes++ : node_of_vertex(c.source);
     const int b = c.cut_at_end() ? n_nodes++ : node_of_vertex(c.target);
-    links.push_back(Link{a, b});
+    links.push_back(Link{a, b, c.length()});
   }
-  std::vector<std::vector<int> > incident(n_nodes);
-  for(int i = 0; i < int(links.size()); ++i) {
-    incident[links[i].a].push_back(i);
-    incident[links[i].b].push_back(i);
+  // the curves at each node, in one array
+  std::vector<int> first(std::size_t(n_nodes) + 1, 0), at(2 * links.size());
+  for(const Link& l : links) {
+    ++first[std::size_t(l.a) + 1];
+    ++first[std::size_t(l.b) + 1];
   }
+  for(std::size_t v = 0; v < std::size_t(n_nodes); ++v) first[v + 1] += first[v];
+  {
+    std::vector<int> fill(first.begin(), first.end() - 1);
+    for(int i = 0; i < int(links.size()); ++i) {
+      at[std::size_t(fill[std::size_t(links[i].a)]++)] = i;
+      at[std::size_t(fill[std::size_t(links[i].b)]++)] = i;
+    }
+  }
+  struct Curves_at {
+    const int *b, *e;
+    const int* begin() const { return b; }
+    const int* end() const { return e; }
+    std::size_t size() const { return std::size_t(e - b); }
+    int operator[](std::size_t i) const { return b[i]; }
+  };
+  auto incident = [&](int v) {
+    return Curves_at{at.data() + first[std::size_t(v)], at.data() + first[std::size_t(v) + 1]};
+  };
   auto other = [&](int link, int node) { return links[link].a == node ? links[link].b : links[link].a; };
 
   // farthest node from a source, along the curves (Dijkstra)
@@ -298,9 +317,9 @@ Medial_axis_centerline_2<K> medial_axis_centerline_2(const Pruned_medial_axis_2<
       const Item it = q.top();
       q.pop();
       if(it.first > dist[it.second]) continue;
-      for(int l : incident[it.second]) {
+      for(int l : incident(it.second)) {
         const int o = other(l, it.second);
-        const double d = it.first + curves[l].length();
+        const double d = it.first + links[l].length;
         if(d < dist[o]) {
           dist[o] = d;
           if(via) (*via)[o] = l;
@@ -310,27 +329,27 @@ Medial_axis_centerline_2<K> medial_axis_centerline_2(const Pruned_medial_axis_2<
     }
     int best = source;
     for(int v = 0; v < n_nodes; ++v)
-      if(incident[v].size() == 1 && dist[v] != std::numeric_limits<double>::infinity() &&
-         (incident[best].size() != 1 || dist[v] > dist[best]))
+      if(incident(v).size() == 1 && dist[v] != std::numeric_limits<double>::infinity() &&
+         (incident(best).size() != 1 || dist[v] > dist[best]))
         best = v;
     return best;
   };
   int start = 0;
   for(int v = 0; v < n_nodes; ++v)
-    if(incident[v].size() == 1) {
+    if(incident(v).size() == 1) {
       start = v;
       break;
     }
   const int end_a = farthest(start, nullptr);
   const int end_b = farthest(end_a, nullptr);
-  const bool a_is_end = incident[end_a].size() == 1, b_is_end = incident[end_b].size() == 1;
+  const bool a_is_end = incident(end_a).size() == 1, b_is_end = incident(end_b).size() == 1;
 
   // peel the side branches: remove the ends other than end_a and end_b
   std::vector<int> degree(n_nodes);
   std::vector<char> removed_link(links.size(), 0), removed_node(n_nodes, 0);
   std::deque<int> leaves;
   for(int v = 0; v < n_nodes; ++v) {
-    degree[v] = int(incident[v].size());
+    degree[v] = int(incident(v).size());
     if(degree[v] == 1 && v != end_a && v != end_b) leaves.push_back(v);
   }
   while(!leaves.empty()) {
@@ -338,7 +357,7 @@ Medial_axis_centerline_2<K> medial_axis_centerline_2(const Pruned_medial_axis_2<
     leaves.pop_front();
     if(removed_node[v] || degree[v] != 1) continue;
     removed_node[v] = 1;
-    for(int l : incident[v]) {
+    for(int l : incident(v)) {
       if(removed_link[l]) continue;
       removed_link[l] = 1;
       const int o = other(l, v);
@@ -353,7 +372,7 @@ Medial_axis_centerline_2<K> medial_axis_centerline_2(const Pruned_medial_axis_2<
     while(!stack.empty()) {
       const int v = stack.back();
       stack.pop_back();
-      for(int l : incident[v])
+      for(int l : incident(v))
         if(!removed_link[l] && !reached[other(l, v)]) {
           reached[other(l, v)] = 1;
           stack.push_back(other(l, v));
@@ -384,7 +403,7 @@ Medial_axis_centerline_2<K> medial_axis_centerline_2(const Pruned_medial_axis_2<
       v = other(l, v);
       if(degree[v] != 2) break;
       int next = -1;
-      for(int m : incident[v])
+      for(int m : incident(v))
         if(!removed_link[m] && !used[m]) next = m;
       if(next < 0) {
         path.closed = true;
@@ -400,11 +419,11 @@ Medial_axis_centerline_2<K> medial_axis_centerline_2(const Pruned_medial_axis_2<
   for(int v = 0; v < n_nodes; ++v)
     if(reached[v] && degree[v] != 2 && v != end_a) starts.push_back(v);
   for(int v : starts)
-    for(int l : incident[v])
+    for(int l : incident(v))
       if(!removed_link[l] && !used[l]) out.paths_.push_back(walk(v, l));
   for(int v = 0; v < n_nodes; ++v)   // cycles without a junction
     if(reached[v])
-      for(int l : incident[v])
+      for(int l : incident(v))
         if(!removed_link[l] && !used[l]) out.paths_.push_back(walk(v, l));
 
   if(extend) {
@@ -417,7 +436,7 @@ Medial_axis_centerline_2<K> medial_axis_centerline_2(const Pruned_medial_axis_2<
       auto is_end_at = [&](const Piece& x, double s) {
         for(int v : {end_a, end_b}) {
           if(!(v == end_a ? a_is_end : b_is_end)) continue;
-          const int l = incident[v][0];
+          const int l = incident(v)[0];
           const Curve& c = curves[l];
           if(c.halfedge == x.halfedge && (links[l].a == v ? c.begin : c.end) == s) return true;
         }

@@ -16,12 +16,14 @@
 
 #include <CGAL/Progressive_medial_axis_2/Medial_axis_2.h>
 
+#include <CGAL/assertions.h>
+
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstddef>
 #include <functional>
 #include <limits>
-#include <queue>
 #include <stdexcept>
 #include <utility>
 #include <vector>
@@ -49,18 +51,30 @@ direction the fire runs.  A branch made by a wiggle of the boundary of size
 \f$\delta\f$ has an erosion thickness of about \f$\delta\f$ at most, however
 long it is: this is what makes pruning by \f$ET\f$ stable.
 
-Algorithm (linear in the size of the axis, after a priority queue on the
-arrival times, O(n log n)): every end catches fire at time 0; popping the
-earliest arrival of a front at a vertex counts one more burnt curve there;
-with all but one counted, the vertex catches fire at that time and sends
-its front into its remaining curve, unless a front already runs the other
-way in it (the fronts then meet inside it).  Invariants: a vertex catches
-fire at most once, at a time no earlier than any front counted there; every
-curve carries at most one front from each end; a curve with fronts from
-both ends holds the meeting point, at arc length \f$(L + t_w - t_u)/2\f$
-from the end \f$u\f$ that caught fire at \f$t_u\f$.  In a component of the
-axis without cycle, exactly one point (a vertex or such a meeting point)
-burns last.
+Algorithm (linear in the size of the axis, no priority queue): the fire
+on a tree depends only on the arrival times, so it is computed by two passes
+over the axis as a graph, as the eccentricities of a tree are.
+1. Leaves are peeled off (Kahn's order): a vertex goes when all its curves
+   but one lead to vertices gone before it; that curve leads to its
+   *parent*.  What is never peeled is the 2-core of the axis, the cycles
+   around holes and the paths between them: it never burns.  A tree without
+   cycle ends at a *root*, peeled last with no parent.  In this order every
+   vertex gets `up(v)`, the latest arrival of the fronts of its children,
+   and the two latest arrivals with the curve of the first.
+2. In the reverse order every vertex gets `down(v)`, the time the front from
+   its parent's side would arrive (infinite below the 2-core): the latest
+   arrival at the parent from all its other curves, plus the curve's length.
+3. A vertex catches fire at the latest of its arrivals but the latest one
+   (0 at an end) and sends its front into the curve of the latest one (the
+   parent's where it ties).
+Invariants: the ignition time of a vertex is no earlier than any front it
+gets; every curve carries a front from one end at least; a curve with fronts
+from both ends holds the meeting point, at arc length
+\f$(L + t_w - t_u)/2\f$ from the end \f$u\f$ that caught fire at \f$t_u\f$.
+In a component of the axis without cycle, exactly one point (a vertex or such
+a meeting point) burns last.  This is the fire the definition describes:
+a front that is not the latest at a vertex always arrives, and the latest
+never does (the vertex sent its own front into that curve first).
 
 Along a curve the radius is a convex function of arc length (linear on the
 bisector of two segments, \f$\sqrt{d^2 + s^2}\f$ on that of two points, the
@@ -141,37 +155,46 @@ public:
   // The graph of the axis, for pruning and centerlines: vertices and curves
   // by index.
   struct Node {
-    Vertex_handle vertex;
     double radius = 0;
     double time = std::numeric_limits<double>::infinity();
+    int vertex = -1;             // its id number in the axis
     int first = 0, degree = 0;   // incident curves: incidence_[first, first + degree)
-    int arrived = 0;             // curves burnt up to this vertex
     int out = -1;                // the curve the fire goes on into
     bool ignited = false;
-    std::size_t rank = 0;        // the order in which the vertices catch fire
   };
   struct Arc {
-    Halfedge_handle halfedge;  // oriented from node u to node w
+    int halfedge = -1;  // the id number of the half-edge, oriented from node u to node w
     int u = -1, w = -1;
     double length = 0;
     // the time a front enters the curve from u (start[0]) and from w
     // (start[1]), infinite if none
     double start[2] = {std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity()};
-    bool arrived[2] = {false, false};   // a front burnt the whole curve up to u, to w
   };
   const std::vector<Node>& nodes() const { return vertices_; }
   const std::vector<Arc>& arcs() const { return arcs_; }
+  // the nodes that catch fire, in an order in which every node comes before
+  // the node its front runs to (the other end of its curve `out`, unless
+  // the fronts meet inside that curve)
+  const std::vector<int>& order_of_fire() const { return order_; }
+  Vertex_handle vertex(int node) const { return ma_.vertex_of_id(std::size_t(vertices_[node].vertex)); }
+  Halfedge_handle halfedge(const Arc& a) const { return ma_.halfedge_of_id(std::size_t(a.halfedge)); }
   // the curves at node v
   const int* arcs_begin(int v) const { return incidence_.data() + vertices_[v].first; }
   const int* arcs_end(int v) const { return incidence_.data() + vertices_[v].first + vertices_[v].degree; }
-  int vertex_index(const Vertex_handle& v) const { return checked(vertex_map_.at(v.id_number())); }
-  int edge_index(const Halfedge_handle& h) const { return checked(edge_map_.at(edge_key(h))); }
+  int vertex_index(const Vertex_handle& v) const { return checked(v.id_number() < vertex_map_.size() ? vertex_map_[v.id_number()] : -1); }
+  int edge_index(const Halfedge_handle& h) const
+  {
+    // the arcs are in the order of the id numbers of their half-edges
+    const int e = int(h.id_number() & ~std::size_t(1));
+    const auto it = std::lower_bound(arcs_.begin(), arcs_.end(), e, [](const Arc& a, int k) { return a.halfedge < k; });
+    return checked(it != arcs_.end() && it->halfedge == e ? int(it - arcs_.begin()) : -1);
+  }
   static int checked(int i)
   {
     if(i < 0) throw std::invalid_argument("Medial_axis_significance_2: not a vertex or a medial curve of the axis");
     return i;
   }
-  bool same_direction(const Halfedge_handle& h) const { return arcs_[edge_index(h)].halfedge == h; }
+  bool same_direction(const Halfedge_handle& h) const { return arcs_[edge_index(h)].halfedge == int(h.id_number()); }
   static double time_along(const Arc& a, double from_u)
   {
     return (std::min)(a.start[0] + from_u, a.start[1] + (a.length - from_u));
@@ -179,40 +202,39 @@ public:
   /// \endcond
 
 private:
-  static std::size_t edge_key(const Halfedge_handle& h)
-  {
-    return (std::min)(h.id_number(), h.opposite().id_number());
-  }
-
-  // Arrays indexed by id numbers rather than hash maps: the ids are dense.
+  // The graph from the arrays of the axis (Medial_axis_2::medial_curve_graph()).
   void build()
   {
+    std::vector<int> curves;
+    std::vector<std::array<int, 2> > ends;
+    std::vector<double> lengths;
+    ma_.medial_curve_graph(curves, ends, lengths);
+    const std::size_t m = curves.size();
     vertex_map_.assign(ma_.vertex_id_bound(), -1);
-    edge_map_.assign(ma_.halfedge_id_bound(), -1);
-    // the vertices of the axis are the ends of its curves: one pass over the
-    // curves finds them
-    auto node = [&](const Vertex_handle& v) {
-      int& i = vertex_map_[v.id_number()];
+    arcs_.resize(m);
+    vertices_.reserve(m + 1);
+    // nodes in the order in which the curves reach them
+    auto node = [&](int v) {
+      int& i = vertex_map_[std::size_t(v)];
       if(i < 0) {
         i = int(vertices_.size());
-        Node n;
-        n.vertex = v;
-        n.radius = CGAL::to_double(v.radius());
-        vertices_.push_back(n);
+        vertices_.emplace_back();
+        vertices_.back().vertex = v;
       }
       return i;
     };
-    for(const Halfedge_handle& h : ma_.edges()) {
-      Arc a;
-      a.halfedge = h;
-      a.u = node(h.source());
-      a.w = node(h.target());
-      a.length = h.length();
-      edge_map_[edge_key(h)] = int(arcs_.size());
-      ++vertices_[a.u].degree;
-      ++vertices_[a.w].degree;
-      arcs_.push_back(a);
+    for(std::size_t k = 0; k < m; ++k) {
+      Arc& a = arcs_[k];
+      a.halfedge = curves[k];
+      a.u = node(ends[k][0]);
+      a.w = node(ends[k][1]);
+      a.length = lengths[k];
+      ++vertices_[std::size_t(a.u)].degree;
+      ++vertices_[std::size_t(a.w)].degree;
     }
+    Progressive_medial_axes::internal::parallel_blocks(vertices_.size(), [&](std::size_t b, std::size_t e) {
+      for(std::size_t i = b; i < e; ++i) vertices_[i].radius = CGAL::to_double(vertex(int(i)).radius());
+    });
     int first = 0;
     for(Node& n : vertices_) {
       n.first = first;
@@ -220,67 +242,154 @@ private:
       n.degree = 0;
     }
     incidence_.resize(std::size_t(first));
-    for(int i = 0; i < int(arcs_.size()); ++i) {
-      Node& u = vertices_[arcs_[i].u];
+    near_.resize(std::size_t(first));
+    for(int i = 0; i < int(m); ++i) {
+      const Arc& a = arcs_[std::size_t(i)];
+      Node& u = vertices_[std::size_t(a.u)];
+      near_[std::size_t(u.first + u.degree)] = Near{a.w, a.length};
       incidence_[std::size_t(u.first + u.degree++)] = i;
-      Node& w = vertices_[arcs_[i].w];
+      Node& w = vertices_[std::size_t(a.w)];
+      near_[std::size_t(w.first + w.degree)] = Near{a.u, a.length};
       incidence_[std::size_t(w.first + w.degree++)] = i;
     }
   }
 
-  // the end of arc a at node v: 0 for u, 1 for w
-  int end_of(const Arc& a, int v) const { return a.u == v ? 0 : 1; }
-
+  // The two passes of the class documentation.  The passes run along the
+  // tree as far as they can before they take the next end (a stack, not a
+  // queue): the nodes they visit in a row are then near each other in
+  // memory, which makes this several times faster than in breadth-first
+  // order on large axes.
   void burn()
   {
-    struct Event {
-      double time;
-      int arc, end;   // the front arrives at that end of that curve
-      bool operator>(const Event& o) const { return time > o.time; }
+    const double inf = infinity(), none = -inf;
+    const std::size_t n = vertices_.size();
+    struct State {
+      double top1, top2;    // the two latest arrivals from the children
+      double down;          // the arrival from the parent's side
+      int top1_child = -1;  // the child of top1
+      int parent_k = -1;    // the incidence towards the parent
+      int left = 0;         // curves not yet peeled; then, fronts still to arrive
     };
-    std::vector<Event> heap;
-    heap.reserve(arcs_.size());
-    std::priority_queue<Event, std::vector<Event>, std::greater<Event> > queue(std::greater<Event>(), std::move(heap));
-    std::size_t rank = 0;
-    auto ignite = [&](int v, double t) {
-      Node& n = vertices_[v];
-      n.ignited = true;
-      n.rank = rank++;
-      n.time = t;
-      last_time_ = (std::max)(last_time_, t);
-      for(const int* ai = arcs_begin(v); ai != arcs_end(v); ++ai) {
-        Arc& a = arcs_[*ai];
-        const int end = end_of(a, v);
-        if(a.arrived[end]) continue;
-        // the remaining curve: the front enters it here
-        n.out = *ai;
-        a.start[end] = t;
-        if(a.start[1 - end] == infinity()) queue.push(Event{t + a.length, *ai, 1 - end});
-        else last_time_ = (std::max)(last_time_, 0.5 * (a.start[0] + a.start[1] + a.length));
-        break;
-      }
-    };
-    for(int v = 0; v < int(vertices_.size()); ++v)
-      if(vertices_[v].degree == 1) ignite(v, 0.0);
-    while(!queue.empty()) {
-      const Event e = queue.top();
-      queue.pop();
-      Arc& a = arcs_[e.arc];
-      const int v = e.end == 0 ? a.u : a.w;
-      if(a.start[e.end] != infinity()) continue;   // the fronts met inside the curve
-      a.arrived[e.end] = true;
-      Node& n = vertices_[v];
-      if(a.u == a.w) a.arrived[1 - e.end] = true;   // a loop reaches its vertex at both ends
-      ++n.arrived;
-      if(!n.ignited && n.arrived + 1 >= n.degree) ignite(v, e.time);
+    std::vector<State> st(n);
+    std::vector<char> gone(n, 0);
+    std::vector<int> peel;
+    peel.reserve(n);
+    for(std::size_t v = 0; v < n; ++v) {
+      st[v].top1 = st[v].top2 = st[v].down = none;
+      st[v].left = vertices_[v].degree;   // a loop (u == w) counts twice and is never peeled
     }
+    // pass 1: peeling, from each end up as long as the next node is ready
+    for(std::size_t v0 = 0; v0 < n; ++v0) {
+      if(vertices_[v0].degree != 1 || gone[v0]) continue;
+      int v = int(v0);
+      while(v >= 0) {
+        gone[std::size_t(v)] = 1;
+        peel.push_back(v);
+        State& x = st[std::size_t(v)];
+        const Node& nv = vertices_[std::size_t(v)];
+        int next = -1;
+        for(int k = nv.first; k < nv.first + nv.degree; ++k) {
+          const int p = near_[std::size_t(k)].node;
+          if(gone[std::size_t(p)]) continue;
+          x.parent_k = k;
+          const double up = (x.top1 == none ? 0.0 : x.top1) + near_[std::size_t(k)].length;
+          State& y = st[std::size_t(p)];
+          if(up > y.top1) {
+            y.top2 = y.top1;
+            y.top1 = up;
+            y.top1_child = v;
+          } else if(up > y.top2)
+            y.top2 = up;
+          if(--y.left == 1) next = p;
+          break;
+        }
+        v = next;
+      }
+    }
+    // pass 2: from the parents down; below the 2-core the parent's side
+    // never sends a front
+    for(std::size_t i = peel.size(); i-- > 0;) {
+      const int v = peel[i];
+      State& x = st[std::size_t(v)];
+      const int k = x.parent_k;
+      if(k < 0) continue;   // a root
+      const int p = near_[std::size_t(k)].node;
+      double t;
+      if(!gone[std::size_t(p)]) t = inf;
+      else {
+        const State& y = st[std::size_t(p)];
+        t = (std::max)(y.down, y.top1_child == v ? y.top2 : y.top1);
+        if(t == none) t = 0;   // p is an end
+      }
+      x.down = t + near_[std::size_t(k)].length;
+    }
+    // ignition: the latest arrival but one, and the curve of the latest
+    std::vector<int> to(n, -1);   // the node the front of a node runs to
+    last_time_ = 0;
+    for(int v : peel) {
+      Node& nv = vertices_[std::size_t(v)];
+      const State& x = st[std::size_t(v)];
+      double t;
+      if(x.parent_k >= 0 && x.down >= x.top1) {
+        nv.out = incidence_[std::size_t(x.parent_k)];
+        to[std::size_t(v)] = near_[std::size_t(x.parent_k)].node;
+        t = x.top1;
+      } else {
+        const int c = x.top1_child;
+        nv.out = incidence_[std::size_t(st[std::size_t(c)].parent_k)];
+        to[std::size_t(v)] = c;
+        t = (std::max)(x.down, x.top2);
+      }
+      nv.time = t == none ? 0.0 : t;
+      nv.ignited = true;
+      last_time_ = (std::max)(last_time_, nv.time);
+      Arc& a = arcs_[std::size_t(nv.out)];
+      a.start[a.u == v ? 0 : 1] = nv.time;
+      if(a.start[0] != inf && a.start[1] != inf) {
+        last_time_ = (std::max)(last_time_, 0.5 * (a.start[0] + a.start[1] + a.length));
+        // the fronts meet inside: neither runs to the other end
+        to[std::size_t(a.u)] = to[std::size_t(a.w)] = -1;
+      }
+    }
+    // the order of fire: a node after every node whose front reaches it,
+    // again along the tree as far as possible
+    auto target = [&](int v) {   // the node v's front reaches, or -1 (a node of the 2-core never burns)
+      const int w = to[std::size_t(v)];
+      return w >= 0 && gone[std::size_t(w)] ? w : -1;
+    };
+    for(int v : peel) st[std::size_t(v)].left = 0;
+    for(int v : peel) {
+      const int w = target(v);
+      if(w >= 0) ++st[std::size_t(w)].left;
+    }
+    order_.clear();
+    order_.reserve(peel.size());
+    for(int v0 : peel) {
+      if(st[std::size_t(v0)].left != 0) continue;
+      int v = v0;
+      while(v >= 0) {
+        st[std::size_t(v)].left = -1;
+        order_.push_back(v);
+        const int w = target(v);
+        v = (w >= 0 && --st[std::size_t(w)].left == 0) ? w : -1;
+      }
+    }
+    CGAL_assertion(order_.size() == peel.size());
+    near_.clear();
+    near_.shrink_to_fit();
   }
 
   Medial_axis ma_;
   std::vector<Node> vertices_;
   std::vector<Arc> arcs_;
   std::vector<int> incidence_;
-  std::vector<int> vertex_map_, edge_map_;   // by id number
+  struct Near {
+    int node;       // the other end of an incidence
+    double length;  // the length of its curve
+  };
+  std::vector<Near> near_;   // next to incidence_, until burn() is done
+  std::vector<int> order_;
+  std::vector<int> vertex_map_;   // by id number
   double last_time_ = 0;
 };
 
@@ -375,6 +484,8 @@ Pruned_medial_axis_2<K> prune_medial_axis_2(const Medial_axis_significance_2<K>&
   const std::vector<Node>& nodes = sig.nodes();
   const std::vector<Arc>& arcs = sig.arcs();
   Pruned_medial_axis_2<K> out(sig.medial_axis());
+  // at most one kept part per curve (pages that are not written cost nothing)
+  out.curves_.reserve(arcs.size());
 
   // the condition at a point of arc a, at arc length x from its node u, in
   // the form f >= 0 (f is concave along the curve)
@@ -395,14 +506,14 @@ Pruned_medial_axis_2<K> prune_medial_axis_2(const Medial_axis_significance_2<K>&
     const double q = from_u ? p : 1 - p;   // parameter from u
     const double s = c.length_at_parameter(q);
     const double x = from_u ? s : a.length - s;  // arc length from the burning end
-    const double r = a.halfedge.distance_to_point(c.point_at_parameter(q));
+    const double r = sig.halfedge(a).distance_to_point(c.point_at_parameter(q));
     return margin(start_time + x, r);
   };
   // the arc length from u of the first point where the condition holds,
   // walking from the burning end (u if from_u) towards the other end, where
   // it holds; the condition fails at the burning end
   auto cut = [&](const Arc& a, double start_time, bool from_u, double p_end) {
-    const Geometry w = a.halfedge.geometry();
+    const Geometry w = sig.halfedge(a).geometry();
     // parameters from the burning end: the condition fails at lo, holds at
     // hi; the Illinois variant of the false position method (the margin is
     // smooth and concave), with bisection steps if it stalls
@@ -433,32 +544,24 @@ Pruned_medial_axis_2<K> prune_medial_axis_2(const Medial_axis_significance_2<K>&
 
   std::vector<char> kept(nodes.size(), 0);
   // nodes that never burn are kept; the others in the reverse of the order
-  // in which they caught fire (not of their times: a curve can be shorter
-  // than the precision of a time): a node is kept if the whole curve it
-  // sends its front into is, and the node at its other end
-  std::vector<int> order(nodes.size(), -1);   // by rank: the ranks are 0, 1, ... in the order of fire
-  std::size_t ignited = 0;
-  for(int v = 0; v < int(nodes.size()); ++v) {
+  // of fire (not of their times: a curve can be shorter than the precision
+  // of a time): a node is kept if the whole curve it sends its front into
+  // is, and the node at its other end
+  for(int v = 0; v < int(nodes.size()); ++v)
     if(!nodes[v].ignited) kept[v] = 1;
-    else {
-      order[nodes[v].rank] = v;
-      ++ignited;
-    }
-  }
-  order.resize(ignited);
-  std::reverse(order.begin(), order.end());
+  std::vector<int> order(sig.order_of_fire().rbegin(), sig.order_of_fire().rend());
   std::vector<char> arc_done(arcs.size(), 0);
   auto add_curve = [&](const Arc& a, double b, double e) {
     Curve c;
-    c.halfedge = a.halfedge;
-    c.source = nodes[a.u].vertex;
-    c.target = nodes[a.w].vertex;
+    c.halfedge = sig.halfedge(a);
+    c.source = sig.vertex(a.u);
+    c.target = sig.vertex(a.w);
     c.full_length = a.length;
     c.begin = (std::max)(0.0, b);
     c.end = (std::min)(a.length, e);
-    c.et_begin = c.begin > 0 ? et_of(Sig::time_along(a, c.begin), a.halfedge.radius_at(c.begin))
+    c.et_begin = c.begin > 0 ? et_of(Sig::time_along(a, c.begin), c.halfedge.radius_at(c.begin))
                              : et_of(nodes[a.u].time, nodes[a.u].radius);
-    c.et_end = c.end < a.length ? et_of(Sig::time_along(a, c.end), a.halfedge.radius_at(c.end))
+    c.et_end = c.end < a.length ? et_of(Sig::time_along(a, c.end), c.halfedge.radius_at(c.end))
                                 : et_of(nodes[a.w].time, nodes[a.w].radius);
     if(c.end > c.begin || (c.begin == 0 && c.end == a.length)) out.curves_.push_back(c);
   };
@@ -467,7 +570,7 @@ Pruned_medial_axis_2<K> prune_medial_axis_2(const Medial_axis_significance_2<K>&
     if(n.out < 0) {
       // fronts from every curve met here: the last burning point of its tree
       if(margin_at_vertex(v) >= 0) kept[v] = 1;
-      else out.points_.push_back(Medial_axis_2<K>::to_xy(n.vertex.point()));
+      else out.points_.push_back(Medial_axis_2<K>::to_xy(sig.vertex(v).point()));
       continue;
     }
     const Arc& a = arcs[n.out];
@@ -479,12 +582,12 @@ Pruned_medial_axis_2<K> prune_medial_axis_2(const Medial_axis_significance_2<K>&
       if(arc_done[n.out]) continue;   // done from its other end
       arc_done[n.out] = 1;
       const double m = (std::max)(0.0, (std::min)(a.length, 0.5 * (a.length + a.start[1] - a.start[0])));
-      const double rm = a.halfedge.radius_at(m);
+      const double rm = sig.halfedge(a).radius_at(m);
       if(margin(Sig::time_along(a, m), rm) < 0) {
-        out.points_.push_back(a.halfedge.point_at(m));
+        out.points_.push_back(sig.halfedge(a).point_at(m));
         continue;
       }
-      const double pmeet = a.halfedge.geometry().parameter_at_length(m);
+      const double pmeet = sig.halfedge(a).geometry().parameter_at_length(m);
       const bool keep_u = margin_at_vertex(a.u) >= 0, keep_w = margin_at_vertex(a.w) >= 0;
       const double b = keep_u ? 0 : cut(a, a.start[0], true, pmeet);
       const double e = keep_w ? a.length : cut(a, a.start[1], false, 1 - pmeet);
@@ -496,7 +599,7 @@ Pruned_medial_axis_2<K> prune_medial_axis_2(const Medial_axis_significance_2<K>&
     arc_done[n.out] = 1;
     if(!kept[other]) continue;
     // the condition at the far end, reached by this curve's front
-    if(margin_at_parameter(a, a.halfedge.geometry(), 1, start, from_u) < 0) continue;
+    if(margin(start + a.length, nodes[other].radius) < 0) continue;
     if(margin_at_vertex(v) >= 0) {
       kept[v] = 1;
       add_curve(a, 0, a.length);
@@ -512,8 +615,8 @@ Pruned_medial_axis_2<K> prune_medial_axis_2(const Medial_axis_significance_2<K>&
   out.kept_.assign(sig.medial_axis().vertex_id_bound(), 0);
   for(int v = 0; v < int(nodes.size()); ++v)
     if(kept[v]) {
-      out.vertices_.push_back(nodes[v].vertex);
-      out.kept_[nodes[v].vertex.id_number()] = 1;
+      out.vertices_.push_back(sig.vertex(v));
+      out.kept_[std::size_t(nodes[v].vertex)] = 1;
     }
   std::size_t whole = 0;
   for(const Curve& c : out.curves_)
