@@ -519,13 +519,16 @@ public:
   // pruning), read from the arrays instead of through handles: `curves`
   // gets the id number of the half-edge of every medial curve, in the order
   // of edges(), `ends` the id numbers of its source and target vertices,
-  // `lengths` its length().  The passes run in parallel where TBB is linked.
+  // `lengths` its length(), `radii` (if given) the radii at its ends in
+  // double (read with the points).  The passes run in parallel where TBB is
+  // linked.
   void medial_curve_graph(std::vector<int>& curves, std::vector<std::array<int, 2> >& ends,
-                          std::vector<double>& lengths) const
+                          std::vector<double>& lengths, std::vector<std::array<double, 2> >* radii = nullptr) const
   {
     curves.clear();
     ends.clear();
     lengths.clear();
+    if(radii) radii->clear();
     if(!d_) return;
     const Data* d = d_.get();
     const std::size_t pairs = hds().halfedge_capacity() / 2;
@@ -561,11 +564,14 @@ public:
     };
     ends.resize(m);
     lengths.resize(m);
+    if(radii) radii->resize(m);
     Progressive_medial_axes::internal::parallel_blocks(m, [&](std::size_t b, std::size_t e) {
       for(std::size_t k = b; k < e; ++k) {
         const int h = curves[k];
         ends[k] = {{representative_of(d->hds.source(h)), representative_of(d->hds.target(h))}};
         lengths[k] = curve(d, h).length();
+        if(radii)
+          (*radii)[k] = {{CGAL::to_double(d->hds.vertex(ends[k][0]).radius), CGAL::to_double(d->hds.vertex(ends[k][1]).radius)}};
       }
     });
   }

@@ -286,11 +286,17 @@ Medial_axis_centerline_2<K> medial_axis_centerline_2(const Pruned_medial_axis_2<
     ++first[std::size_t(l.b) + 1];
   }
   for(std::size_t v = 0; v < std::size_t(n_nodes); ++v) first[v + 1] += first[v];
+  // and next to them, the node at the other end and the length (for the
+  // searches, which then read nothing else)
+  struct Near { int node; double length; };
+  std::vector<Near> near(at.size());
   {
     std::vector<int> fill(first.begin(), first.end() - 1);
     for(int i = 0; i < int(links.size()); ++i) {
-      at[std::size_t(fill[std::size_t(links[i].a)]++)] = i;
-      at[std::size_t(fill[std::size_t(links[i].b)]++)] = i;
+      const int ka = fill[std::size_t(links[i].a)]++, kb = fill[std::size_t(links[i].b)]++;
+      at[std::size_t(ka)] = at[std::size_t(kb)] = i;
+      near[std::size_t(ka)] = Near{links[i].b, links[i].length};
+      near[std::size_t(kb)] = Near{links[i].a, links[i].length};
     }
   }
   struct Curves_at {
@@ -317,12 +323,12 @@ Medial_axis_centerline_2<K> medial_axis_centerline_2(const Pruned_medial_axis_2<
       const Item it = q.top();
       q.pop();
       if(it.first > dist[it.second]) continue;
-      for(int l : incident(it.second)) {
-        const int o = other(l, it.second);
-        const double d = it.first + links[l].length;
+      for(int k = first[std::size_t(it.second)]; k < first[std::size_t(it.second) + 1]; ++k) {
+        const int o = near[std::size_t(k)].node;
+        const double d = it.first + near[std::size_t(k)].length;
         if(d < dist[o]) {
           dist[o] = d;
-          if(via) (*via)[o] = l;
+          if(via) (*via)[o] = at[std::size_t(k)];
           q.push(Item(d, o));
         }
       }

@@ -160,6 +160,9 @@ public:
     int vertex = -1;             // its id number in the axis
     int first = 0, degree = 0;   // incident curves: incidence_[first, first + degree)
     int out = -1;                // the curve the fire goes on into
+    int far = -1;                // the node at its other end
+    double out_length = 0;       // its length
+    bool meets = false;          // whether a front from its other end meets this one inside it
     bool ignited = false;
   };
   struct Arc {
@@ -208,49 +211,60 @@ private:
     std::vector<int> curves;
     std::vector<std::array<int, 2> > ends;
     std::vector<double> lengths;
-    ma_.medial_curve_graph(curves, ends, lengths);
+    std::vector<std::array<double, 2> > radii;
+    ma_.medial_curve_graph(curves, ends, lengths, &radii);
     const std::size_t m = curves.size();
     vertex_map_.assign(ma_.vertex_id_bound(), -1);
     arcs_.resize(m);
-    vertices_.reserve(m + 1);
-    // nodes in the order in which the curves reach them
-    auto node = [&](int v) {
+    // nodes in the order in which the curves reach them; the degrees and
+    // the incidences are counted in small arrays of their own, not in the
+    // nodes' records
+    std::vector<int> node_vertex, count;
+    std::vector<double> node_radius;
+    node_vertex.reserve(m + 1);
+    node_radius.reserve(m + 1);
+    count.reserve(m + 2);
+    count.push_back(0);
+    auto node = [&](int v, double radius) {
       int& i = vertex_map_[std::size_t(v)];
       if(i < 0) {
-        i = int(vertices_.size());
-        vertices_.emplace_back();
-        vertices_.back().vertex = v;
+        i = int(node_vertex.size());
+        node_vertex.push_back(v);
+        node_radius.push_back(radius);
+        count.push_back(0);
       }
+      ++count[std::size_t(i) + 1];
       return i;
     };
     for(std::size_t k = 0; k < m; ++k) {
       Arc& a = arcs_[k];
       a.halfedge = curves[k];
-      a.u = node(ends[k][0]);
-      a.w = node(ends[k][1]);
+      a.u = node(ends[k][0], radii[k][0]);
+      a.w = node(ends[k][1], radii[k][1]);
       a.length = lengths[k];
-      ++vertices_[std::size_t(a.u)].degree;
-      ++vertices_[std::size_t(a.w)].degree;
     }
-    Progressive_medial_axes::internal::parallel_blocks(vertices_.size(), [&](std::size_t b, std::size_t e) {
-      for(std::size_t i = b; i < e; ++i) vertices_[i].radius = CGAL::to_double(vertex(int(i)).radius());
+    const std::size_t n = node_vertex.size();
+    for(std::size_t v = 0; v < n; ++v) count[v + 1] += count[v];   // the first incidence of each node
+    vertices_.resize(n);
+    Progressive_medial_axes::internal::parallel_blocks(n, [&](std::size_t b, std::size_t e) {
+      for(std::size_t i = b; i < e; ++i) {
+        Node& x = vertices_[i];
+        x.vertex = node_vertex[i];
+        x.first = count[i];
+        x.degree = count[i + 1] - count[i];
+        x.radius = node_radius[i];
+      }
     });
-    int first = 0;
-    for(Node& n : vertices_) {
-      n.first = first;
-      first += n.degree;
-      n.degree = 0;
-    }
-    incidence_.resize(std::size_t(first));
-    near_.resize(std::size_t(first));
+    incidence_.resize(std::size_t(count[n]));
+    near_.resize(std::size_t(count[n]));
     for(int i = 0; i < int(m); ++i) {
       const Arc& a = arcs_[std::size_t(i)];
-      Node& u = vertices_[std::size_t(a.u)];
-      near_[std::size_t(u.first + u.degree)] = Near{a.w, a.length};
-      incidence_[std::size_t(u.first + u.degree++)] = i;
-      Node& w = vertices_[std::size_t(a.w)];
-      near_[std::size_t(w.first + w.degree)] = Near{a.u, a.length};
-      incidence_[std::size_t(w.first + w.degree++)] = i;
+      const int ku = count[std::size_t(a.u)]++;
+      near_[std::size_t(ku)] = Near{a.w, a.length};
+      incidence_[std::size_t(ku)] = i;
+      const int kw = count[std::size_t(a.w)]++;
+      near_[std::size_t(kw)] = Near{a.u, a.length};
+      incidence_[std::size_t(kw)] = i;
     }
   }
 
@@ -324,7 +338,7 @@ private:
       x.down = t + near_[std::size_t(k)].length;
     }
     // ignition: the latest arrival but one, and the curve of the latest
-    std::vector<int> to(n, -1);   // the node the front of a node runs to
+    std::vector<int> to(n, -1);   // the node the front of a node runs to (compact, for the last pass)
     last_time_ = 0;
     for(int v : peel) {
       Node& nv = vertices_[std::size_t(v)];
@@ -332,12 +346,14 @@ private:
       double t;
       if(x.parent_k >= 0 && x.down >= x.top1) {
         nv.out = incidence_[std::size_t(x.parent_k)];
-        to[std::size_t(v)] = near_[std::size_t(x.parent_k)].node;
+        nv.far = to[std::size_t(v)] = near_[std::size_t(x.parent_k)].node;
+        nv.out_length = near_[std::size_t(x.parent_k)].length;
         t = x.top1;
       } else {
         const int c = x.top1_child;
         nv.out = incidence_[std::size_t(st[std::size_t(c)].parent_k)];
-        to[std::size_t(v)] = c;
+        nv.far = to[std::size_t(v)] = c;
+        nv.out_length = near_[std::size_t(st[std::size_t(c)].parent_k)].length;
         t = (std::max)(x.down, x.top2);
       }
       nv.time = t == none ? 0.0 : t;
@@ -348,6 +364,7 @@ private:
       if(a.start[0] != inf && a.start[1] != inf) {
         last_time_ = (std::max)(last_time_, 0.5 * (a.start[0] + a.start[1] + a.length));
         // the fronts meet inside: neither runs to the other end
+        vertices_[std::size_t(a.u)].meets = vertices_[std::size_t(a.w)].meets = true;
         to[std::size_t(a.u)] = to[std::size_t(a.w)] = -1;
       }
     }
@@ -567,20 +584,11 @@ Pruned_medial_axis_2<K> prune_medial_axis_2(const Medial_axis_significance_2<K>&
   };
   for(int v : order) {
     const Node& n = nodes[v];
-    if(n.out < 0) {
-      // fronts from every curve met here: the last burning point of its tree
-      if(margin_at_vertex(v) >= 0) kept[v] = 1;
-      else out.points_.push_back(Medial_axis_2<K>::to_xy(sig.vertex(v).point()));
-      continue;
-    }
-    const Arc& a = arcs[n.out];
-    const bool from_u = (a.u == v);
-    const int other = from_u ? a.w : a.u;
-    const double start = a.start[from_u ? 0 : 1];
-    if(a.start[from_u ? 1 : 0] != inf) {
+    if(n.meets) {
       // fronts meet inside this curve: the meeting point burns last
       if(arc_done[n.out]) continue;   // done from its other end
       arc_done[n.out] = 1;
+      const Arc& a = arcs[n.out];
       const double m = (std::max)(0.0, (std::min)(a.length, 0.5 * (a.length + a.start[1] - a.start[0])));
       const double rm = sig.halfedge(a).radius_at(m);
       if(margin(Sig::time_along(a, m), rm) < 0) {
@@ -596,22 +604,25 @@ Pruned_medial_axis_2<K> prune_medial_axis_2(const Medial_axis_significance_2<K>&
       add_curve(a, b, e);
       continue;
     }
-    arc_done[n.out] = 1;
-    if(!kept[other]) continue;
+    // the front runs to the far end (from the node's own record: the curve
+    // is read only for what is kept)
+    if(!kept[n.far]) continue;
     // the condition at the far end, reached by this curve's front
-    if(margin(start + a.length, nodes[other].radius) < 0) continue;
+    if(margin(n.time + n.out_length, nodes[n.far].radius) < 0) continue;
+    const Arc& a = arcs[n.out];
+    const bool from_u = (a.u == v);
     if(margin_at_vertex(v) >= 0) {
       kept[v] = 1;
       add_curve(a, 0, a.length);
     } else {
-      const double c = cut(a, start, from_u, 1);
+      const double c = cut(a, n.time, from_u, 1);
       if(from_u) add_curve(a, c, a.length);
       else add_curve(a, 0, c);
     }
   }
   // curves between nodes that never burn
   for(std::size_t i = 0; i < arcs.size(); ++i)
-    if(!arc_done[i] && arcs[i].start[0] == inf && arcs[i].start[1] == inf) add_curve(arcs[i], 0, arcs[i].length);
+    if(arcs[i].start[0] == inf && arcs[i].start[1] == inf) add_curve(arcs[i], 0, arcs[i].length);
   out.kept_.assign(sig.medial_axis().vertex_id_bound(), 0);
   for(int v = 0; v < int(nodes.size()); ++v)
     if(kept[v]) {

@@ -64,7 +64,7 @@ struct Curve {
     const double px = p.first / scale, py = p.second / scale;
     const double ax = q0.first / scale, ay = q0.second / scale;
     const double dx = q1.first / scale - ax, dy = q1.second / scale - ay;
-    const double len = std::hypot(dx, dy);
+    const double len = std::sqrt(dx * dx + dy * dy);   // (scaled: no overflow, and faster than hypot)
     if(!(len > 0)) return;
     tx = dx / len;
     ty = dy / len;
@@ -90,7 +90,7 @@ struct Curve {
   // arc length from the vertex of the parabola to abscissa x (scaled frame)
   double arc(double x) const
   {
-    const double s = std::hypot(x, h);
+    const double s = std::sqrt(x * x + h * h);   // (scaled)
     return (x * s + h * h * std::asinh(x / h)) / (2.0 * h);
   }
 
@@ -99,7 +99,8 @@ struct Curve {
     if(!parabolic) {
       const double sc = (std::max)({std::fabs(a.first), std::fabs(a.second), std::fabs(b.first), std::fabs(b.second)});
       if(!(sc > 0)) return 0;
-      return std::hypot(b.first / sc - a.first / sc, b.second / sc - a.second / sc) * sc;
+      const double dx = b.first / sc - a.first / sc, dy = b.second / sc - a.second / sc;
+      return std::sqrt(dx * dx + dy * dy) * sc;   // (scaled)
     }
     return std::fabs(arc(abscissa(b)) - arc(abscissa(a))) * scale;
   }
@@ -119,7 +120,7 @@ struct Curve {
       const double f = std::fabs(arc(x) - a0) - target;
       if(f < 0) lo = u;
       else hi = u;
-      double next = u - f * h / std::hypot(x, h);
+      double next = u - f * h / std::sqrt(x * x + h * h);   // (scaled)
       if(!(next > lo && next < hi)) next = 0.5 * (lo + hi);
       if(next == u || hi - lo <= 1e-15 * (std::fabs(xa) + std::fabs(xb) + h)) break;
       u = next;
