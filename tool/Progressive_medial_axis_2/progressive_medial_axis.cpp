@@ -593,7 +593,6 @@ int run(const Options& o)
     job.stats.vanishings += union_stats.vanishings;
     job.stats.validation_seconds = 0;   // (counted in time_read with the reading)
     job.ma = &job.one_shot;
-    analyse(o, job);
   } else if(!progressive) {
     // the one-shot divide and conquer of every polygon (in parallel over the
     // polygons, largest first, and within each), then what the options ask
@@ -609,7 +608,6 @@ int run(const Options& o)
           job.one_shot = CGAL::medial_axis_2(job.input->rings, Traits(), CGAL::TRUST_INPUT, &job.stats);
           job.stats.validation_seconds = job.validation_seconds;
           job.ma = &job.one_shot;
-          analyse(o, job);
         });
         progress.done_one();
       });
@@ -683,9 +681,16 @@ int run(const Options& o)
     job.ma = &pma->medial_axis();
     job.stats = pma->statistics();
     job.steps = pma->number_of_steps();
-    analyse(o, job);
   }
   const double total_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  // significance, pruning and centerlines after the axes: time_total ends at
+  // the final axis, they have time_prune of their own
+  if(o.prune || !o.centerline.empty() || !o.width.empty())
+    in_arena([&]() {
+      for_each_polygon(largest_first(input), [&](std::size_t k) {
+        if(jobs[k].ma) analyse(o, jobs[k]);
+      });
+    });
   if(o.stats && !progressive && o.union_with.empty()) {
     // the step count of region growing, out of the timing and the filter
     // counters (counting steps is not work of the one-shot)
