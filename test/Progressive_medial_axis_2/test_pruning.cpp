@@ -250,6 +250,55 @@ std::pair<std::map<std::size_t, double>, double> reference_fire(const MA& ma)
   return {time, last};
 }
 
+// The linear algorithm gives the times of the event simulation at every
+// vertex, and its latest burning time.
+void check_against_simulation(const MA& ma, const CGAL::Medial_axis_significance_2<K>& sig, const std::string& what)
+{
+  const auto ref = reference_fire(ma);
+  const double tol = 1e-9 * (1 + ref.second);
+  CHECK(std::fabs(sig.last_burning_time() - ref.second) <= tol,
+        what << ": latest burning time " << sig.last_burning_time() << ", by simulation " << ref.second);
+  for(const auto& v : ma.vertices()) {
+    const auto it = ref.first.find(v.id_number());
+    const double expected = it == ref.first.end() ? std::numeric_limits<double>::infinity() : it->second;
+    const double got = sig.extended_distance(v);
+    CHECK(got == expected || std::fabs(got - expected) <= tol,
+          what << ": a vertex burns at " << got << ", by simulation at " << expected);
+  }
+}
+
+// Ties: symmetric shapes, where fronts arrive at a vertex at equal times
+// and meet exactly at vertices (a regular polygon, a square with a square
+// hole, a cross, a grid polygon).
+void test_ties()
+{
+  std::vector<std::pair<std::string, Rings> > shapes;
+  Rings ngon(1);
+  for(int i = 0; i < 12; ++i) ngon[0].push_back(Point(std::cos(2 * pi * i / 12), std::sin(2 * pi * i / 12)));
+  shapes.emplace_back("regular 12-gon", ngon);
+  shapes.emplace_back("square with a square hole",
+                      Rings{{Point(0, 0), Point(4, 0), Point(4, 4), Point(0, 4)},
+                            {Point(1, 1), Point(1, 3), Point(3, 3), Point(3, 1)}});
+  shapes.emplace_back("cross", Rings{{Point(1, 0), Point(2, 0), Point(2, 1), Point(3, 1), Point(3, 2), Point(2, 2),
+                                      Point(2, 3), Point(1, 3), Point(1, 2), Point(0, 2), Point(0, 1), Point(1, 1)}});
+  shapes.emplace_back("rectangle 2 x 1", Rings{{Point(0, 0), Point(2, 0), Point(2, 1), Point(0, 1)}});
+  shapes.emplace_back("grid comb", Rings{{Point(0, 0), Point(5, 0), Point(5, 3), Point(4, 3), Point(4, 1), Point(3, 1),
+                                          Point(3, 3), Point(2, 3), Point(2, 1), Point(1, 1), Point(1, 3), Point(0, 3)}});
+  for(const auto& x : shapes) {
+    const MA ma = CGAL::medial_axis_2(x.second);
+    const CGAL::Medial_axis_significance_2<K> sig(ma);
+    check_against_simulation(ma, sig, x.first);
+    // pruning at every threshold keeps the topology
+    for(double et : {0.01, 0.2, 0.5}) {
+      const Pruned p = CGAL::prune_medial_axis_2(sig, et);
+      const pma_test::Pruned_graph g = pma_test::pruned_graph(p);
+      const bool point = p.curves().empty() && p.isolated_points().size() == 1;
+      CHECK(point || (g.components == 1 && g.cycles == int(x.second.size()) - 1),
+            x.first << ", et=" << et << ": " << g.components << " components, " << g.cycles << " cycles");
+    }
+  }
+}
+
 // The invariants of the grassfire transform, and pruning keeps the topology,
 // on random polygons with holes.
 void test_invariants()
@@ -261,18 +310,7 @@ void test_invariants()
     const CGAL::Medial_axis_significance_2<K> sig(ma);
     const std::string what = "random polygon " + std::to_string(seed);
     const int holes = int(r.size()) - 1;
-    // the linear algorithm gives the times of the event simulation
-    const auto ref = reference_fire(ma);
-    const double tol = 1e-9 * (1 + ref.second);
-    CHECK(std::fabs(sig.last_burning_time() - ref.second) <= tol,
-          what << ": latest burning time " << sig.last_burning_time() << ", by simulation " << ref.second);
-    for(const auto& v : ma.vertices()) {
-      const auto it = ref.first.find(v.id_number());
-      const double expected = it == ref.first.end() ? std::numeric_limits<double>::infinity() : it->second;
-      const double got = sig.extended_distance(v);
-      CHECK(got == expected || std::fabs(got - expected) <= tol,
-            what << ": a vertex burns at " << got << ", by simulation at " << expected);
-    }
+    check_against_simulation(ma, sig, what);
     for(const auto& v : ma.vertices()) {
       const double t = sig.extended_distance(v);
       CHECK(sig.erosion_thickness(v) >= 0, what << ": negative erosion thickness");
@@ -381,5 +419,6 @@ int main()
   test_band();
   test_braided();
   test_invariants();
+  test_ties();
   return pma_test::report("test_pruning");
 }

@@ -34,6 +34,7 @@
 #include <limits>
 #include <memory>
 #include <string>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -44,16 +45,20 @@ template <class Traits_> class Progressive_medial_axis_2;
 namespace Progressive_medial_axes {
 namespace internal {
 // Calls f(begin, end) on blocks that cover [0, n), in parallel where TBB is
-// linked (f must only write what its block owns).
+// linked and `parallel` is true (f must only write what its block owns).
+// Work that reads numbers of an exact kernel must pass false: a lazy exact
+// number refines itself when it is read, which is not thread-safe.
 template <class F>
-void parallel_blocks(std::size_t n, const F& f)
+void parallel_blocks(std::size_t n, const F& f, bool parallel = true)
 {
 #if defined(CGAL_LINKED_WITH_TBB) && !defined(CGAL_PMA2_NO_TBB)
-  if(n > 16384) {
+  if(parallel && n > 16384) {
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 8192),
                       [&](const tbb::blocked_range<std::size_t>& r) { f(r.begin(), r.end()); });
     return;
   }
+#else
+  (void)parallel;
 #endif
   f(std::size_t(0), n);
 }
@@ -521,7 +526,7 @@ public:
   // of edges(), `ends` the id numbers of its source and target vertices,
   // `lengths` its length(), `radii` (if given) the radii at its ends in
   // double (read with the points).  The passes run in parallel where TBB is
-  // linked.
+  // linked and the kernel's numbers are doubles.
   void medial_curve_graph(std::vector<int>& curves, std::vector<std::array<int, 2> >& ends,
                           std::vector<double>& lengths, std::vector<std::array<double, 2> >* radii = nullptr) const
   {
@@ -532,6 +537,8 @@ public:
     if(!d_) return;
     const Data* d = d_.get();
     const std::size_t pairs = hds().halfedge_capacity() / 2;
+    // (the passes read the points and radii: in parallel only for doubles)
+    const bool plain_numbers = std::is_floating_point<FT>::value;
     // 1: a medial curve, 2: an edge of length zero (its ends are one point)
     std::vector<char> kind(pairs);
     Progressive_medial_axes::internal::parallel_blocks(pairs, [&](std::size_t b, std::size_t e) {
@@ -539,7 +546,7 @@ public:
         const int h = int(2 * i);
         kind[i] = keep_edge(d, h) ? 1 : (!d->hds.is_deleted(h) && d->hds.is_zero_length(h) ? 2 : 0);
       }
-    });
+    }, plain_numbers);
     std::vector<int> zero_length_ends;
     std::size_t m = 0;
     for(std::size_t i = 0; i < pairs; ++i) {
@@ -573,7 +580,7 @@ public:
         if(radii)
           (*radii)[k] = {{CGAL::to_double(d->hds.vertex(ends[k][0]).radius), CGAL::to_double(d->hds.vertex(ends[k][1]).radius)}};
       }
-    });
+    }, plain_numbers);
   }
   /// \endcond
 

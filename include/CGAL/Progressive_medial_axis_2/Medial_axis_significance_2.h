@@ -65,10 +65,12 @@ over the axis as a graph, as the eccentricities of a tree are.
    its parent's side would arrive (infinite below the 2-core): the latest
    arrival at the parent from all its other curves, plus the curve's length.
 3. A vertex catches fire at the latest of its arrivals but the latest one
-   (0 at an end) and sends its front into the curve of the latest one (the
-   parent's where it ties).
+   (0 at an end) and sends its front into the curve of the latest one (on a
+   tie, the parent's; between children, the first child peeled).  The times
+   do not depend on how ties are broken.
 Invariants: the ignition time of a vertex is no earlier than any front it
-gets; every curve carries a front from one end at least; a curve with fronts
+gets; every curve at a vertex that burns carries a front from one end at
+least (the curves of the 2-core carry none); a curve with fronts
 from both ends holds the meeting point, at arc length
 \f$(L + t_w - t_u)/2\f$ from the end \f$u\f$ that caught fire at \f$t_u\f$.
 In a component of the axis without cycle, exactly one point (a vertex or such
@@ -268,11 +270,10 @@ private:
     }
   }
 
-  // The two passes of the class documentation.  The passes run along the
-  // tree as far as they can before they take the next end (a stack, not a
-  // queue): the nodes they visit in a row are then near each other in
-  // memory, which makes this several times faster than in breadth-first
-  // order on large axes.
+  // The two passes of the class documentation.  Peeling follows a chain from
+  // each end up the tree as long as the next node is ready, then the scan
+  // takes the next end by index: the nodes visited in a row are then
+  // neighbours on the axis rather than ends spread over the whole shape.
   void burn()
   {
     const double inf = infinity(), none = -inf;
