@@ -106,7 +106,7 @@ public:
 
   /// Computes the extended distance function of `ma` (a copy of the handle
   /// to the axis is kept).
-  explicit Medial_axis_significance_2(const Medial_axis& ma) : ma_(ma) { build(); burn(); }
+  explicit Medial_axis_significance_2(const Medial_axis& ma) : ma_(ma) { burn(build()); }
 
   const Medial_axis& medial_axis() const { return ma_; }
 
@@ -207,8 +207,15 @@ public:
   /// \endcond
 
 private:
+  // The other end of each incidence and the length of its curve, next to
+  // incidence_ (what the passes of burn() read).
+  struct Near {
+    int node;
+    double length;
+  };
+
   // The graph from the arrays of the axis (Medial_axis_2::medial_curve_graph()).
-  void build()
+  std::vector<Near> build()
   {
     std::vector<int> curves;
     std::vector<std::array<int, 2> > ends;
@@ -258,23 +265,24 @@ private:
       }
     });
     incidence_.resize(std::size_t(count[n]));
-    near_.resize(std::size_t(count[n]));
+    std::vector<Near> near(std::size_t(count[n]));
     for(int i = 0; i < int(m); ++i) {
       const Arc& a = arcs_[std::size_t(i)];
       const int ku = count[std::size_t(a.u)]++;
-      near_[std::size_t(ku)] = Near{a.w, a.length};
+      near[std::size_t(ku)] = Near{a.w, a.length};
       incidence_[std::size_t(ku)] = i;
       const int kw = count[std::size_t(a.w)]++;
-      near_[std::size_t(kw)] = Near{a.u, a.length};
+      near[std::size_t(kw)] = Near{a.u, a.length};
       incidence_[std::size_t(kw)] = i;
     }
+    return near;
   }
 
   // The two passes of the class documentation.  Peeling follows a chain from
   // each end up the tree as long as the next node is ready, then the scan
   // takes the next end by index: the nodes visited in a row are then
   // neighbours on the axis rather than ends spread over the whole shape.
-  void burn()
+  void burn(const std::vector<Near>& near)
   {
     const double inf = infinity(), none = -inf;
     const std::size_t n = vertices_.size();
@@ -304,10 +312,10 @@ private:
         const Node& nv = vertices_[std::size_t(v)];
         int next = -1;
         for(int k = nv.first; k < nv.first + nv.degree; ++k) {
-          const int p = near_[std::size_t(k)].node;
+          const int p = near[std::size_t(k)].node;
           if(gone[std::size_t(p)]) continue;
           x.parent_k = k;
-          const double up = (x.top1 == none ? 0.0 : x.top1) + near_[std::size_t(k)].length;
+          const double up = (x.top1 == none ? 0.0 : x.top1) + near[std::size_t(k)].length;
           State& y = st[std::size_t(p)];
           if(up > y.top1) {
             y.top2 = y.top1;
@@ -328,7 +336,7 @@ private:
       State& x = st[std::size_t(v)];
       const int k = x.parent_k;
       if(k < 0) continue;   // a root
-      const int p = near_[std::size_t(k)].node;
+      const int p = near[std::size_t(k)].node;
       double t;
       if(!gone[std::size_t(p)]) t = inf;
       else {
@@ -336,7 +344,7 @@ private:
         t = (std::max)(y.down, y.top1_child == v ? y.top2 : y.top1);
         if(t == none) t = 0;   // p is an end
       }
-      x.down = t + near_[std::size_t(k)].length;
+      x.down = t + near[std::size_t(k)].length;
     }
     // ignition: the latest arrival but one, and the curve of the latest
     std::vector<int> to(n, -1);   // the node the front of a node runs to (compact, for the last pass)
@@ -347,14 +355,14 @@ private:
       double t;
       if(x.parent_k >= 0 && x.down >= x.top1) {
         nv.out = incidence_[std::size_t(x.parent_k)];
-        nv.far = to[std::size_t(v)] = near_[std::size_t(x.parent_k)].node;
-        nv.out_length = near_[std::size_t(x.parent_k)].length;
+        nv.far = to[std::size_t(v)] = near[std::size_t(x.parent_k)].node;
+        nv.out_length = near[std::size_t(x.parent_k)].length;
         t = x.top1;
       } else {
         const int c = x.top1_child;
         nv.out = incidence_[std::size_t(st[std::size_t(c)].parent_k)];
         nv.far = to[std::size_t(v)] = c;
-        nv.out_length = near_[std::size_t(st[std::size_t(c)].parent_k)].length;
+        nv.out_length = near[std::size_t(st[std::size_t(c)].parent_k)].length;
         t = (std::max)(x.down, x.top2);
       }
       nv.time = t == none ? 0.0 : t;
@@ -393,19 +401,12 @@ private:
       }
     }
     CGAL_assertion(order_.size() == peel.size());
-    near_.clear();
-    near_.shrink_to_fit();
   }
 
   Medial_axis ma_;
   std::vector<Node> vertices_;
   std::vector<Arc> arcs_;
   std::vector<int> incidence_;
-  struct Near {
-    int node;       // the other end of an incidence
-    double length;  // the length of its curve
-  };
-  std::vector<Near> near_;   // next to incidence_, until burn() is done
   std::vector<int> order_;
   std::vector<int> vertex_map_;   // by id number
   double last_time_ = 0;

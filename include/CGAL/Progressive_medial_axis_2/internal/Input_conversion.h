@@ -199,10 +199,6 @@ void link_touching_corners(Data& data, const Orientation& orientation)
     int end = k + 1;
     const Point& p = data.points[std::size_t(order[std::size_t(k)])];
     while(end < m_order && data.points[std::size_t(order[std::size_t(end)])] == p) ++end;
-    if(end - k == 1) {
-      k = end;
-      continue;
-    }
     if(prev.empty()) {   // predecessors along the cycles, once
       prev.assign(std::size_t(n), -1);
       for(int i = 0; i < n; ++i)
