@@ -584,6 +584,34 @@ private:
 
 /// An event time of the filtered traits: an interval that encloses it, and
 /// what is needed to evaluate it again more precisely on demand.
+/// The span, in bits, of the coordinates of sites: from the highest bit of
+/// the largest to the lowest set bit of any.  At most 24 bits (integers of a
+/// grid, short binary fractions), the one-root computations fit in
+/// Small_rational and the filtered traits try them before the MPFR
+/// intervals (what the double intervals could not decide is then almost
+/// always an exact tie); otherwise Small_rational almost surely overflows,
+/// and the MPFR intervals, cheaper than GMP rationals, come first.
+struct Coordinate_span {
+  int lowest = std::numeric_limits<int>::max(), highest = std::numeric_limits<int>::min();
+
+  void add(double x)
+  {
+    if(x == 0) return;
+    int e;
+    const double m = std::frexp(x, &e);
+    const std::int64_t mi = std::int64_t(std::ldexp(m, 53));
+    highest = (std::max)(highest, e);
+    lowest = (std::min)(lowest, e - 53 + __builtin_ctzll(std::uint64_t(mi < 0 ? -mi : mi)));
+  }
+  template <class Site_2>
+  void add(const Site_2& x)
+  {
+    add(CGAL::to_double(x.p.x())); add(CGAL::to_double(x.p.y()));
+    add(CGAL::to_double(x.q.x())); add(CGAL::to_double(x.q.y()));
+  }
+  bool is_short() const { return highest - lowest <= 24; }
+};
+
 template <class Site_2>
 class Filtered_event_time
 {
@@ -662,28 +690,15 @@ public:
     return one_root_state_ > 0 ? one_root_.get() : nullptr;
   }
 
-  /// Whether the coordinates of the sites span at most 24 bits (integers
-  /// of a grid, short binary fractions): the computation then fits in
-  /// Small_rational, and otherwise almost surely overflows it.
+  /// Whether the coordinates of the sites span at most 24 bits (see
+  /// Coordinate_span).
   bool short_coordinates() const
   {
-    int lowest = std::numeric_limits<int>::max(), highest = std::numeric_limits<int>::min();
-    auto add = [&](double x) {
-      if(x == 0) return;
-      int e;
-      const double m = std::frexp(x, &e);
-      const std::int64_t mi = std::int64_t(std::ldexp(m, 53));
-      highest = (std::max)(highest, e);
-      lowest = (std::min)(lowest, e - 53 + __builtin_ctzll(std::uint64_t(mi < 0 ? -mi : mi)));
-    };
-    auto add_site = [&](const Site_2& x) {
-      add(CGAL::to_double(x.p.x())); add(CGAL::to_double(x.p.y()));
-      add(CGAL::to_double(x.q.x())); add(CGAL::to_double(x.q.y()));
-    };
-    add_site(c_);
+    Coordinate_span span;
+    span.add(c_);
     if(kind_ > TIME_END)
-      for(int i = 0; i < 3; ++i) add_site(s_[i]);
-    return highest - lowest <= 24;
+      for(int i = 0; i < 3; ++i) span.add(s_[i]);
+    return span.is_short();
   }
 
   /// The time in nested-root numbers, in the current Nested_root_context.
@@ -815,7 +830,7 @@ private:
           return false;
         t.approx_ = v->to_interval();
         return true;
-      });
+      }, t.short_coordinates());
     if(decided)
       return *decided;
     ++filter_statistics().exact_evaluations;
@@ -876,7 +891,7 @@ private:
         const Comparison_result res = Comparison_result(int(*sign));
         ++filter_statistics().rational_comparisons;
         return tie(a, b, res);
-      });
+      }, a.short_coordinates() && b.short_coordinates());
     if(decided)
       return *decided;
     ++filter_statistics().exact_comparisons;
@@ -971,7 +986,7 @@ private:
         } catch(Progressive_medial_axes::internal::Small_rational_overflow&) {
           return one_root(Progressive_medial_axes::internal::One_root_rational());
         }
-      });
+      }, short_coordinates(s, s));
     if(decided)
       return *decided;
     ++filter_statistics().exact_evaluations;
@@ -984,8 +999,8 @@ private:
     return true;
   }
 
-  // Whether two triples define the same disk: double intervals, then exact
-  // one-root numbers (small, then GMP), then nested-root numbers.
+  // Whether two triples define the same disk: double intervals, then the
+  // stages of before_exact(), then nested-root numbers.
   static bool same_disk(const Site_2* s, const Site_2* t)
   {
     const Progressive_medial_axes::internal::Triple_relations rs = Progressive_medial_axes::internal::triple_relations<CK>(s);
@@ -1006,18 +1021,39 @@ private:
       Progressive_medial_axes::internal::Circle_nt<N> a, b;
       if(!disk_nt<N>(s, rs, a) || !disk_nt<N>(t, rt, b))
         return false;
-      return a.x == b.x && a.y == b.y && a.r == b.r;
+      return bool(a.x == b.x && a.y == b.y && a.r == b.r);
     };
-    try {
-      try {
-        return equal(Progressive_medial_axes::internal::Small_one_root());
-      } catch(Progressive_medial_axes::internal::Small_rational_overflow&) {
-        return equal(Progressive_medial_axes::internal::One_root_rational());
-      }
-    } catch(Progressive_medial_axes::internal::Not_one_root&) {
-    }
+    const std::optional<bool> decided = before_exact<bool>(
+      [&]() -> std::optional<bool> {   // MPFR intervals decide only that the disks differ
+        Progressive_medial_axes::internal::Circle_nt<Mpfr> a, b;
+        if(!disk_nt<Mpfr>(s, rs, a) || !disk_nt<Mpfr>(t, rt, b))
+          return false;
+        if(certainly(a.x != b.x) || certainly(a.y != b.y) || certainly(a.r != b.r))
+          return false;
+        return std::nullopt;
+      },
+      [&]() -> std::optional<bool> {
+        try {
+          return equal(Progressive_medial_axes::internal::Small_one_root());
+        } catch(Progressive_medial_axes::internal::Small_rational_overflow&) {
+          return equal(Progressive_medial_axes::internal::One_root_rational());
+        }
+      }, short_coordinates(s, t));
+    if(decided)
+      return *decided;
     Progressive_medial_axes::internal::Nested_root_context context;
     return equal(Nested());
+  }
+
+  // Whether the sites of two triples have short coordinates (Coordinate_span).
+  static bool short_coordinates(const Site_2* s, const Site_2* t)
+  {
+    Progressive_medial_axes::internal::Coordinate_span span;
+    for(int i = 0; i < 3; ++i) {
+      span.add(s[i]);
+      span.add(t[i]);
+    }
+    return span.is_short();
   }
 
   // Whether the open disk of the triple meets the closed segment: the sign
@@ -1032,28 +1068,43 @@ private:
     return compare_times(t, zero) == SMALLER;
   }
 
-  // The stages between the double intervals and the nested-root numbers, in
-  // order: exact one-root numbers, then MPFR intervals.  What the double
-  // intervals cannot decide is almost always an exact tie (degenerate input:
-  // integer grids, symmetric shapes), which the one-root numbers decide
-  // when the computation keeps their form, as it does with axis-parallel
-  // edges; MPFR intervals then decide the near-ties that are not ties.  On
+  // The stages between the double intervals and the nested-root numbers:
+  // exact one-root numbers and MPFR intervals.  What the double intervals
+  // cannot decide is almost always an exact tie (degenerate input: integer
+  // grids, symmetric shapes), which the one-root numbers decide when the
+  // computation keeps their form, as it does with axis-parallel edges; MPFR
+  // intervals decide the near-ties that are not ties.  With short
+  // coordinates (Coordinate_span) the one-root numbers come first, in
+  // Small_rational; otherwise they would need GMP rationals, and the MPFR
+  // intervals, cheaper, come first (on a Koch snowflake with decimal
+  // coordinates most of these decisions are near-ties, not ties).  On
   // non-degenerate input the double intervals decide nearly everything, and
   // a value outside the one-root form is found after a few operations.  A
   // stage returns its result, or nothing when it cannot decide.
   template <class R, class Mpfr_stage, class One_root_stage>
-  static std::optional<R> before_exact(const Mpfr_stage& mpfr_stage, const One_root_stage& one_root_stage)
+  static std::optional<R> before_exact(const Mpfr_stage& mpfr_stage, const One_root_stage& one_root_stage,
+                                       bool one_root_first = true)
   {
-    try {
-      if(std::optional<R> r = one_root_stage())
+    auto one_root = [&]() -> std::optional<R> {
+      try {
+        return one_root_stage();
+      } catch(Progressive_medial_axes::internal::Not_one_root&) {
+      }
+      return std::nullopt;
+    };
+    if(one_root_first)
+      if(std::optional<R> r = one_root())
         return r;
-    } catch(Progressive_medial_axes::internal::Not_one_root&) {
+    {
+      Progressive_medial_axes::internal::Mpfr_precision_scope scope(mpfr_precision);
+      try {
+        if(std::optional<R> r = mpfr_stage())
+          return r;
+      } catch(Uncertain_conversion_exception&) {
+      }
     }
-    Progressive_medial_axes::internal::Mpfr_precision_scope scope(mpfr_precision);
-    try {
-      return mpfr_stage();
-    } catch(Uncertain_conversion_exception&) {
-    }
+    if(!one_root_first)
+      return one_root();
     return std::nullopt;
   }
 

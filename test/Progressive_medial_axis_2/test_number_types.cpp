@@ -2,7 +2,10 @@
 // numbers (internal/One_root_rational.h): exact ties, signs against MPFR at
 // high precision, and the cases that must be handed on (Not_one_root); and
 // the nested-root numbers (internal/Nested_root_number.h) that take them:
-// several roots, roots of roots, roots that denest, exact zeros, division.
+// several roots, roots of roots, roots that denest, exact zeros, division;
+// and the MPFR intervals' products and quotients by the signs of the bounds
+// (internal/Mpfr_interval.h) against the hull of the four products.
+#include <CGAL/Progressive_medial_axis_2/internal/Mpfr_interval.h>
 #include <CGAL/Progressive_medial_axis_2/internal/One_root_rational.h>
 #include <CGAL/Progressive_medial_axis_2/internal/Nested_root_number.h>
 
@@ -23,6 +26,8 @@ using CGAL::Progressive_medial_axes::internal::Small_rational_overflow;
 using CGAL::Progressive_medial_axes::internal::Small_one_root;
 using CGAL::Progressive_medial_axes::internal::Nested_root_context;
 using CGAL::Progressive_medial_axes::internal::Nested_root_number;
+using CGAL::Progressive_medial_axes::internal::Mpfr_interval;
+using CGAL::Progressive_medial_axes::internal::Mpfr_precision_scope;
 
 namespace {
 
@@ -234,10 +239,81 @@ void small_rational_tests()
   std::printf("%d small-rational expressions (%d overflowed), 5000 one-root comparisons\n", compared, overflows);
 }
 
+// The product or quotient of a and b as the hull of the four products or
+// quotients of their bounds, each rounded outwards: a and b's bounds in x
+// and y, the result's in lo and hi.
+void hull_of_four(mpfr_srcptr x0, mpfr_srcptr x1, mpfr_srcptr y0, mpfr_srcptr y1, bool divide, mpfr_ptr lo, mpfr_ptr hi)
+{
+  mpfr_t t;
+  mpfr_init2(t, mpfr_get_prec(lo));
+  const mpfr_srcptr x[2] = {x0, x1}, y[2] = {y0, y1};
+  for(int i = 0; i < 4; ++i) {
+    auto op = divide ? mpfr_div : mpfr_mul;
+    op(t, x[i / 2], y[i % 2], MPFR_RNDD);
+    if(i == 0 || mpfr_less_p(t, lo)) mpfr_set(lo, t, MPFR_RNDD);
+    op(t, x[i / 2], y[i % 2], MPFR_RNDU);
+    if(i == 0 || mpfr_greater_p(t, hi)) mpfr_set(hi, t, MPFR_RNDU);
+  }
+  mpfr_clear(t);
+}
+
+// Products and quotients of intervals of every sign pattern (positive,
+// negative, containing 0, zero, points), at the inline precision (256 bits)
+// and at a precision whose bounds are on the heap (1024 bits).
+void mpfr_interval_tests()
+{
+  std::mt19937_64 random(7);
+  std::uniform_real_distribution<double> u(-3, 3);
+  int compared = 0;
+  for(mpfr_prec_t precision : {256, 1024}) {
+    Mpfr_precision_scope scope(precision);
+    auto make = [&](int kind) {
+      const double a = u(random), b = u(random);
+      switch(kind) {
+      case 0: return Mpfr_interval(a);                                             // a point
+      case 1: return Mpfr_interval(a) / Mpfr_interval(3);                          // narrow, the sign of a
+      case 2: return Mpfr_interval(a) / Mpfr_interval(3) * Mpfr_interval(3) - Mpfr_interval(a);   // around 0
+      case 3: return Mpfr_interval(a) / Mpfr_interval(3) + Mpfr_interval(b) / Mpfr_interval(7);
+      default: return Mpfr_interval(0);
+      }
+    };
+    mpfr_t lo, hi;
+    mpfr_init2(lo, precision);
+    mpfr_init2(hi, precision);
+    for(int i = 0; i < 20000; ++i) {
+      const Mpfr_interval a = make(int(random() % 5)), b = make(int(random() % 5));
+      for(bool divide : {false, true}) {
+        if(divide && mpfr_sgn(b.lower()) <= 0 && mpfr_sgn(b.upper()) >= 0) {
+          bool thrown = false;
+          try {
+            (void)(a / b);
+          } catch(CGAL::Uncertain_conversion_exception&) {
+            thrown = true;
+          }
+          CHECK(thrown, "an MPFR interval divided by one containing 0 throws");
+          continue;
+        }
+        const Mpfr_interval r = divide ? a / b : a * b;
+        hull_of_four(a.lower(), a.upper(), b.lower(), b.upper(), divide, lo, hi);
+        ++compared;
+        if(!mpfr_equal_p(r.lower(), lo) || !mpfr_equal_p(r.upper(), hi)) {
+          ++pma_test::failures();
+          std::printf("FAIL: MPFR interval %s differs from the hull of four (%d bits, case %d)\n",
+                      divide ? "quotient" : "product", int(precision), i);
+        }
+      }
+    }
+    mpfr_clear(lo);
+    mpfr_clear(hi);
+  }
+  std::printf("%d MPFR interval products and quotients\n", compared);
+}
+
 } // namespace
 
 int main()
 {
+  mpfr_interval_tests();
   small_rational_tests();
   nested_root_tests();
   // squares of rationals stay rational

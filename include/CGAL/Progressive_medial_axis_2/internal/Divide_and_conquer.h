@@ -340,9 +340,26 @@ private:
   std::vector<char> added_;   // written by the part of each triangle only
 };
 
+/// The number of parts of a one-shot of `triangles` triangles: four per
+/// thread of the current task arena (so that the threads stay busy to the
+/// end), on one thread too, and parts of at least 32 triangles.  Balanced
+/// parts merged pairwise do less work than one part grown a triangle at a
+/// time where many generators are cocircular: on one thread, a regular
+/// 1000-gon took 279 ms in one part and 89 ms in four, a Koch snowflake of
+/// 384 vertices 19.7 ms and 13.4 ms, country outlines about 6% less, integer
+/// grids the same (RESULTS.md, 2026-11-26).
+inline std::size_t default_parts(std::size_t triangles)
+{
+  std::size_t threads = 1;
+#ifdef CGAL_PMA2_USE_TBB
+  threads = std::size_t((std::max)(1, tbb::this_task_arena::max_concurrency()));
+#endif
+  return (std::max)(std::size_t(1), (std::min)(4 * threads, triangles / 32));
+}
+
 /// The axis of the polygon of `triangles` (its constrained Delaunay
 /// triangulation) by divide and conquer, into the engine's structure, in
-/// `parts` parts, or with 0 a few per thread of the current task arena.
+/// `parts` parts, or with 0 as many as default_parts() chooses.
 /// Parts run in parallel only on a kernel of doubles (Epick, or
 /// Simple_cartesian<double>): the number types of exact kernels (CORE::Expr,
 /// the lazy numbers of Epeck) share state between threads in CGAL 5.5.  The
@@ -352,14 +369,8 @@ Divide_and_conquer_counts divide_and_conquer(Medial_axis_engine<Traits>& engine,
                                              std::size_t parts = 0)
 {
   const bool parallel = std::is_floating_point<typename Traits::Kernel::FT>::value;
-  if(parts == 0) {
-    parts = 1;
-#ifdef CGAL_PMA2_USE_TBB
-    // a few parts per thread, so that the threads stay busy to the end
-    const int threads = tbb::this_task_arena::max_concurrency();
-    if(threads > 1 && parallel) parts = 4 * std::size_t(threads);
-#endif
-  }
+  if(parts == 0)
+    parts = parallel ? default_parts(triangles.size()) : 1;
   Divide_and_conquer<Traits> driver(engine, std::move(triangles));
   Thread_counters<Traits> counters;
   std::mutex mutex;

@@ -14,6 +14,12 @@
 // Comparisons return CGAL::Uncertain<bool>, whose conversion to bool throws
 // CGAL::Uncertain_conversion_exception when the interval cannot decide, as
 // with CGAL::Interval_nt.
+//
+// Boost.Multiprecision's `mpfr_float` has no directed rounding per
+// operation and `mpfi` (MPFI) is not a dependency of CGAL, hence this class.
+// The bounds of an interval of at most 256 bits (the filtered traits'
+// precision) live in the object (MPFR's custom interface), not on the heap:
+// malloc and free were a third of the MPFR stage's time on symmetric shapes.
 
 #ifndef CGAL_PROGRESSIVE_MEDIAL_AXIS_2_INTERNAL_MPFR_INTERVAL_H
 #define CGAL_PROGRESSIVE_MEDIAL_AXIS_2_INTERNAL_MPFR_INTERVAL_H
@@ -51,6 +57,7 @@ public:
     mpfr_set(lo_, o.lo_, MPFR_RNDD);
     mpfr_set(hi_, o.hi_, MPFR_RNDU);
   }
+  // (no move: the bounds may point into the object's own storage)
   Mpfr_interval& operator=(const Mpfr_interval& o)
   {
     if(this != &o) {
@@ -59,8 +66,17 @@ public:
     }
     return *this;
   }
-  ~Mpfr_interval() { mpfr_clear(lo_); mpfr_clear(hi_); }
+  ~Mpfr_interval()
+  {
+    if(mpfr_get_prec(lo_) > inline_precision) {
+      mpfr_clear(lo_);
+      mpfr_clear(hi_);
+    }
+  }
 
+  /// The bounds.
+  mpfr_srcptr lower() const { return lo_; }
+  mpfr_srcptr upper() const { return hi_; }
   double inf() const { return mpfr_get_d(lo_, MPFR_RNDD); }
   double sup() const { return mpfr_get_d(hi_, MPFR_RNDU); }
   /// The double nearest to the midpoint.
@@ -99,23 +115,36 @@ public:
     mpfr_neg(r.hi_, a.lo_, MPFR_RNDU);
     return r;
   }
+  // Products and quotients by the signs of the bounds, as CGAL::Interval_nt:
+  // two operations, four only for a product of two intervals containing 0.
   friend Mpfr_interval operator*(const Mpfr_interval& a, const Mpfr_interval& b)
   {
     Mpfr_interval r;
-    mpfr_t t;
-    mpfr_init2(t, precision());
-    const mpfr_srcptr x[2] = {a.lo_, a.hi_}, y[2] = {b.lo_, b.hi_};
-    mpfr_mul(r.lo_, x[0], y[0], MPFR_RNDD);
-    mpfr_mul(r.hi_, x[0], y[0], MPFR_RNDU);
-    for(int i = 0; i < 2; ++i)
-      for(int j = 0; j < 2; ++j) {
-        if(i == 0 && j == 0) continue;
-        mpfr_mul(t, x[i], y[j], MPFR_RNDD);
-        mpfr_min(r.lo_, r.lo_, t, MPFR_RNDD);
-        mpfr_mul(t, x[i], y[j], MPFR_RNDU);
-        mpfr_max(r.hi_, r.hi_, t, MPFR_RNDU);
-      }
-    mpfr_clear(t);
+    auto set = [&](mpfr_srcptr l1, mpfr_srcptr l2, mpfr_srcptr h1, mpfr_srcptr h2) {
+      mpfr_mul(r.lo_, l1, l2, MPFR_RNDD);
+      mpfr_mul(r.hi_, h1, h2, MPFR_RNDU);
+    };
+    if(mpfr_sgn(a.lo_) >= 0) {
+      if(mpfr_sgn(b.lo_) >= 0) set(a.lo_, b.lo_, a.hi_, b.hi_);
+      else if(mpfr_sgn(b.hi_) <= 0) set(a.hi_, b.lo_, a.lo_, b.hi_);
+      else set(a.hi_, b.lo_, a.hi_, b.hi_);
+    } else if(mpfr_sgn(a.hi_) <= 0) {
+      if(mpfr_sgn(b.lo_) >= 0) set(a.lo_, b.hi_, a.hi_, b.lo_);
+      else if(mpfr_sgn(b.hi_) <= 0) set(a.hi_, b.hi_, a.lo_, b.lo_);
+      else set(a.lo_, b.hi_, a.lo_, b.lo_);
+    } else if(mpfr_sgn(b.lo_) >= 0) {
+      set(a.lo_, b.hi_, a.hi_, b.hi_);
+    } else if(mpfr_sgn(b.hi_) <= 0) {
+      set(a.hi_, b.lo_, a.lo_, b.lo_);
+    } else {   // both contain 0 in their interiors
+      Mpfr_interval t;
+      mpfr_mul(r.lo_, a.lo_, b.hi_, MPFR_RNDD);
+      mpfr_mul(t.lo_, a.hi_, b.lo_, MPFR_RNDD);
+      mpfr_min(r.lo_, r.lo_, t.lo_, MPFR_RNDD);
+      mpfr_mul(r.hi_, a.lo_, b.lo_, MPFR_RNDU);
+      mpfr_mul(t.hi_, a.hi_, b.hi_, MPFR_RNDU);
+      mpfr_max(r.hi_, r.hi_, t.hi_, MPFR_RNDU);
+    }
     return r;
   }
   friend Mpfr_interval operator/(const Mpfr_interval& a, const Mpfr_interval& b)
@@ -124,20 +153,19 @@ public:
     if(mpfr_sgn(b.lo_) <= 0 && mpfr_sgn(b.hi_) >= 0)
       throw Uncertain_conversion_exception("Mpfr_interval: division by an interval containing 0");
     Mpfr_interval r;
-    mpfr_t t;
-    mpfr_init2(t, precision());
-    const mpfr_srcptr x[2] = {a.lo_, a.hi_}, y[2] = {b.lo_, b.hi_};
-    mpfr_div(r.lo_, x[0], y[0], MPFR_RNDD);
-    mpfr_div(r.hi_, x[0], y[0], MPFR_RNDU);
-    for(int i = 0; i < 2; ++i)
-      for(int j = 0; j < 2; ++j) {
-        if(i == 0 && j == 0) continue;
-        mpfr_div(t, x[i], y[j], MPFR_RNDD);
-        mpfr_min(r.lo_, r.lo_, t, MPFR_RNDD);
-        mpfr_div(t, x[i], y[j], MPFR_RNDU);
-        mpfr_max(r.hi_, r.hi_, t, MPFR_RNDU);
-      }
-    mpfr_clear(t);
+    auto set = [&](mpfr_srcptr l1, mpfr_srcptr l2, mpfr_srcptr h1, mpfr_srcptr h2) {
+      mpfr_div(r.lo_, l1, l2, MPFR_RNDD);
+      mpfr_div(r.hi_, h1, h2, MPFR_RNDU);
+    };
+    if(mpfr_sgn(b.lo_) > 0) {
+      if(mpfr_sgn(a.lo_) >= 0) set(a.lo_, b.hi_, a.hi_, b.lo_);
+      else if(mpfr_sgn(a.hi_) <= 0) set(a.lo_, b.lo_, a.hi_, b.hi_);
+      else set(a.lo_, b.lo_, a.hi_, b.lo_);
+    } else {
+      if(mpfr_sgn(a.lo_) >= 0) set(a.hi_, b.hi_, a.lo_, b.lo_);
+      else if(mpfr_sgn(a.hi_) <= 0) set(a.hi_, b.lo_, a.lo_, b.hi_);
+      else set(a.hi_, b.hi_, a.lo_, b.hi_);
+    }
     return r;
   }
   Mpfr_interval& operator+=(const Mpfr_interval& b) { return *this = *this + b; }
@@ -201,12 +229,24 @@ public:
   }
 
 private:
+  static constexpr mpfr_prec_t inline_precision = 256;
+  static constexpr int inline_limbs = int((inline_precision + GMP_NUMB_BITS - 1) / GMP_NUMB_BITS);
+
   void init()
   {
-    mpfr_init2(lo_, precision());
-    mpfr_init2(hi_, precision());
+    const mpfr_prec_t p = precision();
+    if(p <= inline_precision) {
+      mpfr_custom_init(lo_limbs_, p);
+      mpfr_custom_init_set(lo_, MPFR_ZERO_KIND, 0, p, lo_limbs_);
+      mpfr_custom_init(hi_limbs_, p);
+      mpfr_custom_init_set(hi_, MPFR_ZERO_KIND, 0, p, hi_limbs_);
+    } else {
+      mpfr_init2(lo_, p);
+      mpfr_init2(hi_, p);
+    }
   }
   mpfr_t lo_, hi_;
+  mp_limb_t lo_limbs_[inline_limbs], hi_limbs_[inline_limbs];
 };
 
 /// Sets the precision of the MPFR intervals in a scope.
