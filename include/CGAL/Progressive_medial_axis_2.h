@@ -396,7 +396,7 @@ template <class Traits>
 Medial_axis_2<typename Traits::Kernel>
 one_shot_medial_axis(const std::vector<std::vector<typename Traits::Kernel::Point_2> >& rings, const Traits& traits,
                      Medial_axis_input_check check, Progressive_medial_axis_statistics* statistics,
-                     std::size_t parts = 0)   // 0: a few per thread of the task arena
+                     std::size_t parts = 0)   // 0: default_parts()
 {
   typedef typename Traits::Kernel Kernel;
   typedef Medial_axis_engine<Traits> Engine;
