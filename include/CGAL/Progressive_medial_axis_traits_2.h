@@ -597,11 +597,26 @@ struct Coordinate_span {
   void add(double x)
   {
     if(x == 0) return;
-    int e;
-    const double m = std::frexp(x, &e);
-    const std::int64_t mi = std::int64_t(std::ldexp(m, 53));
-    highest = (std::max)(highest, e);
-    lowest = (std::min)(lowest, e - 53 + __builtin_ctzll(std::uint64_t(mi < 0 ? -mi : mi)));
+    std::uint64_t bits;
+    std::memcpy(&bits, &x, sizeof bits);
+    const int biased = int((bits >> 52) & 0x7ff);
+    if(biased == 0x7ff) {   // (not finite: never short)
+      highest = 1 << 20;
+      lowest = -(1 << 20);
+      return;
+    }
+    if(biased == 0) {   // subnormal
+      int e;
+      const double m = std::frexp(x, &e);
+      const std::int64_t mi = std::int64_t(std::ldexp(m, 53));
+      highest = (std::max)(highest, e);
+      lowest = (std::min)(lowest, e - 53 + __builtin_ctzll(std::uint64_t(mi < 0 ? -mi : mi)));
+      return;
+    }
+    // x = (2^52 + mantissa) 2^(biased - 1075), its highest bit 2^(biased - 1023)
+    const std::uint64_t significand = (bits & ((std::uint64_t(1) << 52) - 1)) | (std::uint64_t(1) << 52);
+    highest = (std::max)(highest, biased - 1022);
+    lowest = (std::min)(lowest, biased - 1075 + __builtin_ctzll(significand));
   }
   template <class Site_2>
   void add(const Site_2& x)
@@ -694,11 +709,14 @@ public:
   /// Coordinate_span).
   bool short_coordinates() const
   {
-    Coordinate_span span;
-    span.add(c_);
-    if(kind_ > TIME_END)
-      for(int i = 0; i < 3; ++i) span.add(s_[i]);
-    return span.is_short();
+    if(short_state_ == 0) {
+      Coordinate_span span;
+      span.add(c_);
+      if(kind_ > TIME_END)
+        for(int i = 0; i < 3; ++i) span.add(s_[i]);
+      short_state_ = span.is_short() ? 1 : -1;
+    }
+    return short_state_ > 0;
   }
 
   /// The time in nested-root numbers, in the current Nested_root_context.
@@ -716,6 +734,7 @@ public:
   mutable signed char mpfr_state_ = 2;     // 2 not computed yet, else as returned by mpfr()
   mutable std::shared_ptr<One_root_value> one_root_;
   mutable signed char one_root_state_ = 0; // 0 unknown, 1 one_root_ holds it, -1 not a one-root number
+  mutable signed char short_state_ = 0;    // 0 unknown, else the sign is short_coordinates()
   mutable std::shared_ptr<char> tie_;       // shared by times found exactly equal
 };
 
@@ -790,6 +809,7 @@ private:
     }
     t.one_root_.reset();
     t.one_root_state_ = 0;
+    t.short_state_ = 0;
     t.mpfr_.reset();
     t.mpfr_state_ = 2;
     t.tie_.reset();
