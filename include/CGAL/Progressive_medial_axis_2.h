@@ -29,7 +29,9 @@
 #include <CGAL/Polygon_with_holes_2.h>
 
 #include <chrono>
+#include <cmath>
 #include <cstddef>
+#include <exception>
 #include <memory>
 #include <mutex>
 #include <thread>
@@ -405,10 +407,45 @@ one_shot_medial_axis(const std::vector<std::vector<typename Traits::Kernel::Poin
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
   };
   Progressive_medial_axis_statistics stats;
+  // (on the heap, freed as soon as the triangles are read)
+  auto triangulation = std::make_unique<Ring_triangulation<Kernel> >();
   auto t0 = std::chrono::steady_clock::now();
   if(check == CHECK_INPUT) {
-    validate_polygon(rings);
-    stats.validation_seconds = seconds_since(t0);
+    bool overlap = false;
+#ifdef CGAL_PMA2_USE_TBB
+    // The validation (a sweep) and the Delaunay triangulation of the points
+    // (which any finite points have) run at the same time; the constraints
+    // wait for a valid polygon.
+    if(std::is_floating_point<typename Kernel::FT>::value && tbb::this_task_arena::max_concurrency() > 1) {
+      overlap = true;
+      for(const auto& ring : rings)
+        for(const auto& p : ring)
+          if(!std::isfinite(CGAL::to_double(p.x())) || !std::isfinite(CGAL::to_double(p.y()))) overlap = false;
+    }
+    if(overlap) {
+      std::exception_ptr invalid;
+      tbb::parallel_invoke(
+        [&] {
+          try {
+            validate_polygon(rings);
+          } catch(...) {
+            invalid = std::current_exception();
+          }
+          stats.validation_seconds = seconds_since(t0);
+        },
+        [&] {
+          const auto t1 = std::chrono::steady_clock::now();
+          triangulation->insert_points(rings);
+          stats.overlapped_seconds = seconds_since(t1);
+        });
+      if(invalid)
+        std::rethrow_exception(invalid);
+    }
+#endif
+    if(!overlap) {
+      validate_polygon(rings);
+      stats.validation_seconds = seconds_since(t0);
+    }
   }
   auto data = std::make_shared<Data>();
   set_points(*data, rings, traits.orientation_2_object());
@@ -416,9 +453,10 @@ one_shot_medial_axis(const std::vector<std::vector<typename Traits::Kernel::Poin
   stats.holes = rings.size() - 1;
 
   t0 = std::chrono::steady_clock::now();
-  std::vector<Triangle> triangles = triangulate_rings<Kernel>(*data);
+  std::vector<Triangle> triangles = triangulation->finish(*data);
+  triangulation.reset();
   stats.triangles = triangles.size();
-  stats.triangulation_seconds = seconds_since(t0);
+  stats.triangulation_seconds = stats.overlapped_seconds + seconds_since(t0);
 
   t0 = std::chrono::steady_clock::now();
   data->hds.reserve(2 * data->points.size() + 16, 4 * data->points.size() + 16);

@@ -18,6 +18,10 @@
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/CORE_Expr.h>
 
+#ifdef CGAL_LINKED_WITH_TBB
+#include <tbb/task_arena.h>
+#endif
+
 #include <pma_test/check.h>
 #include <pma_test/random_polygons.h>
 #include <pma_tool/medial_axis_io.h>
@@ -412,6 +416,37 @@ void bad_input()
     error = e.ring() == 0 && std::string(e.what()).find("ring 0") != std::string::npos;
   }
   CHECK(error, "validate_polygon() names the ring");
+
+  // The one-shot checks its input while another thread triangulates the
+  // points: every kind of invalid polygon gets validate_polygon()'s error
+  // (on two threads, where the two run at the same time).
+  typedef Epick::Point_2 P;
+  const std::vector<std::pair<std::string, std::vector<std::vector<P> > > > invalid{
+    {"crossing", bowtie},
+    {"zero-length edge", {{P(0, 0), P(4, 0), P(4, 4), P(4, 4), P(0, 4)}}},
+    {"spike", {{P(0, 0), P(4, 0), P(4, 2), P(7, 2), P(5, 2), P(4, 3), P(0, 4)}}},
+    {"hole outside", {{P(0, 0), P(4, 0), P(4, 4), P(0, 4)}, {P(5, 5), P(6, 5), P(6, 6)}}},
+    {"crossing rings", {{P(0, 0), P(4, 0), P(4, 4), P(0, 4)}, {P(1, 1), P(5, 1), P(5, 2), P(1, 2)}}},
+    {"too few vertices", {{P(0, 0), P(4, 0)}}},
+    {"not finite", {{P(0, 0), P(4, 0), P(std::nan(""), 4)}}}};
+  auto message = [](const auto& f) {
+    try {
+      f();
+    } catch(const CGAL::Progressive_medial_axes::Input_error& e) {
+      return std::string(e.what());
+    }
+    return std::string();
+  };
+  for(const auto& [name, rings] : invalid) {
+    const std::string expected = message([&] { CGAL::Progressive_medial_axes::validate_polygon(rings); });
+    std::string got;
+#ifdef CGAL_LINKED_WITH_TBB
+    tbb::task_arena(2).execute([&] { got = message([&] { CGAL::medial_axis_2(rings); }); });
+#else
+    got = message([&] { CGAL::medial_axis_2(rings); });
+#endif
+    CHECK(!expected.empty() && got == expected, "one-shot on invalid input (" << name << "): " << got);
+  }
 }
 
 // Concurrency: 4 threads read one result, 4 threads build 4 results.

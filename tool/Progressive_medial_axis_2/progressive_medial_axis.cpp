@@ -290,6 +290,7 @@ void add_statistics(CGAL::Progressive_medial_axis_statistics& s, const CGAL::Pro
   s.merges += t.merges;
   s.validation_seconds += t.validation_seconds;
   s.triangulation_seconds += t.triangulation_seconds;
+  s.overlapped_seconds += t.overlapped_seconds;
   s.merge_seconds += t.merge_seconds;
   s.switches += t.switches;
   s.vanishings += t.vanishings;
@@ -496,13 +497,20 @@ int run(const Options& o)
     return true;
   };
 
+  const bool progressive = o.step >= 0 || o.frames > 0 || !o.html.empty() || !o.progressive.empty();
+  const bool boundary = o.progressive == "boundary";
+  // A plain one-shot (no progressive option, --union or --repair) checks
+  // each polygon in CGAL::medial_axis_2(), while another thread triangulates
+  // its points, and reports an invalid one once all are done.  Otherwise
   // every polygon is checked before any is computed: an invalid one stops
-  // the run at once, or is repaired with --repair
+  // the run at once, or is repaired with --repair.
+  const bool check_in_one_shot = !progressive && o.union_with.empty() && !o.repair;
   std::vector<std::string> errors(input.size());
   std::vector<double> validation_seconds(input.size(), 0);
-  in_arena([&]() {
-    for_each_polygon(largest_first(input), [&](std::size_t k) { validation_seconds[k] = validate(input[k].rings, errors[k]); });
-  });
+  if(!check_in_one_shot)
+    in_arena([&]() {
+      for_each_polygon(largest_first(input), [&](std::size_t k) { validation_seconds[k] = validate(input[k].rings, errors[k]); });
+    });
   Repair_counts repairs;
   if(o.repair) {
     const auto tr = std::chrono::steady_clock::now();
@@ -566,8 +574,6 @@ int run(const Options& o)
     if(multi) jobs[k].prefix = "p" + std::to_string(k) + ":";
   }
 
-  const bool progressive = o.step >= 0 || o.frames > 0 || !o.html.empty() || !o.progressive.empty();
-  const bool boundary = o.progressive == "boundary";
   if(multi && (progressive || !o.shape_out.empty()))
     usage_error("--step, --frames, --html, --progressive and --shape-out need one polygon; " + o.input + " has " +
                 std::to_string(input.size()));
@@ -605,14 +611,21 @@ int run(const Options& o)
       for_each_polygon(largest_first(input), [&](std::size_t k) {
         Job& job = jobs[k];
         counters.run_counted(caller, mutex, [&]() {
-          job.one_shot = CGAL::medial_axis_2(job.input->rings, Traits(), CGAL::TRUST_INPUT, &job.stats);
-          job.stats.validation_seconds = job.validation_seconds;
+          try {
+            job.one_shot = CGAL::medial_axis_2(job.input->rings, Traits(),
+                                               check_in_one_shot ? CGAL::CHECK_INPUT : CGAL::TRUST_INPUT, &job.stats);
+          } catch(const CGAL::Progressive_medial_axes::Input_error& e) {
+            errors[k] = e.what();
+            return;
+          }
+          if(!check_in_one_shot) job.stats.validation_seconds = job.validation_seconds;
           job.ma = &job.one_shot;
         });
         progress.done_one();
       });
     });
     if constexpr(!std::is_empty<Counters>::value) counters.gather();
+    if(check_in_one_shot && report(errors, "")) return 2;
   } else {
     try {
       // (boundary evolution: the class's own check finds the vertices inside
@@ -828,7 +841,9 @@ int run(const Options& o)
       double span = 0;
       for(const Job& job : jobs) {
         const auto& t = job.stats;
-        span = std::max(span, t.validation_seconds + t.triangulation_seconds + t.parts_seconds_max + t.join_seconds);
+        span = std::max(span, t.validation_seconds + t.triangulation_seconds -
+                                  std::min(t.validation_seconds, t.overlapped_seconds) + t.parts_seconds_max +
+                                  t.join_seconds);
       }
       std::printf("dc_parts %zu\ntime_parts_sum %.6f\ntime_parts_max %.6f\ntime_parts_join %.6f\ntime_work %.6f\n"
                   "time_span %.6f\n",

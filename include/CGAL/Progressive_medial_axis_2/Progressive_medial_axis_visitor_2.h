@@ -47,7 +47,9 @@ struct Progressive_medial_axis_statistics {
   // The task tree of a one-shot divide and conquer (`CGAL::medial_axis_2()`):
   // its work is validation + triangulation + `parts_seconds_sum` +
   // `join_seconds`, its span (the longest chain of dependent tasks)
-  // validation + triangulation + `parts_seconds_max` + `join_seconds`.
+  // validation + triangulation - min(validation, `overlapped_seconds`) +
+  // `parts_seconds_max` + `join_seconds`.
+  double overlapped_seconds = 0;   ///< one shot: the part of the triangulation that ran while another thread validated the input (the points' Delaunay triangulation; 0 when sequential)
   std::size_t parts = 0;           ///< one shot: parts of the divide and conquer
   double parts_seconds_sum = 0;    ///< one shot: the tasks of all parts (built independently), summed
   double parts_seconds_max = 0;    ///< one shot: the longest task of a part

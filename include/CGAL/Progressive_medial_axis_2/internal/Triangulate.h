@@ -68,8 +68,13 @@ inline int side_towards(const std::vector<Triangle>& triangles, int u, int t)
 ///
 /// Points whose successor is -1 are not part of the polygon (the vertices
 /// that boundary evolution removed from its coarse shape) and are left out.
-template <class Kernel, class Data>
-std::vector<Triangle> triangulate_rings(Data& data)
+/// The constrained Delaunay triangulation of a polygon's rings, in two
+/// phases: the Delaunay triangulation of the points, which any finite points
+/// have (the one-shot builds it while another thread validates the input),
+/// then the edges as constraints and the triangles inside, which need a
+/// valid polygon.
+template <class Kernel>
+class Ring_triangulation
 {
   typedef Exact_predicates_kernel_for<Kernel> TK;
   typedef typename TK::type K;
@@ -80,14 +85,44 @@ std::vector<Triangle> triangulate_rings(Data& data)
   typedef Constrained_Delaunay_triangulation_2<K, Tds, Exact_predicates_tag> CDT;
   typedef typename CDT::Vertex_handle Vertex_handle;
 
+public:
+  /// Phase 1 from the rings: their points, numbered in order over the rings
+  /// (as set_points() numbers them).  The coordinates must be finite.
+  template <class Point_2>
+  void insert_points(const std::vector<std::vector<Point_2> >& rings)
+  {
+    std::vector<std::pair<typename K::Point_2, int> > pts;
+    int i = 0;
+    for(const auto& ring : rings)
+      for(const Point_2& p : ring) pts.emplace_back(TK::point(p), i++);
+    cdt_.insert(pts.begin(), pts.end());
+    inserted_ = true;
+  }
+
+  /// Phase 2 (and phase 1 from `data` if not done): the triangles inside the
+  /// valid polygon of `data`, whose points are those of phase 1.
+  template <class Data>
+  std::vector<Triangle> finish(Data& data);
+
+private:
+  CDT cdt_;
+  bool inserted_ = false;
+};
+
+template <class Kernel>
+template <class Data>
+std::vector<Triangle> Ring_triangulation<Kernel>::finish(Data& data)
+{
   auto& points = data.points;
   auto& info = data.info;
-  std::vector<std::pair<typename K::Point_2, int> > pts;
-  pts.reserve(points.size());
-  for(std::size_t i = 0; i < points.size(); ++i)
-    if(info[i].next >= 0) pts.emplace_back(TK::point(points[i]), int(i));
-  CDT cdt;
-  cdt.insert(pts.begin(), pts.end());
+  CDT& cdt = cdt_;
+  if(!inserted_) {
+    std::vector<std::pair<typename K::Point_2, int> > pts;
+    pts.reserve(points.size());
+    for(std::size_t i = 0; i < points.size(); ++i)
+      if(info[i].next >= 0) pts.emplace_back(TK::point(points[i]), int(i));
+    cdt.insert(pts.begin(), pts.end());
+  }
   std::vector<Vertex_handle> handle(points.size());
   for(auto v = cdt.finite_vertices_begin(); v != cdt.finite_vertices_end(); ++v)
     handle[v->info()] = v;
@@ -222,6 +257,12 @@ std::vector<Triangle> triangulate_rings(Data& data)
     }
   }
   return tris;
+}
+
+template <class Kernel, class Data>
+std::vector<Triangle> triangulate_rings(Data& data)
+{
+  return Ring_triangulation<Kernel>().finish(data);
 }
 
 } // namespace internal
