@@ -582,8 +582,6 @@ private:
   }
 };
 
-/// An event time of the filtered traits: an interval that encloses it, and
-/// what is needed to evaluate it again more precisely on demand.
 /// The span, in bits, of the coordinates of sites: from the highest bit of
 /// the largest to the lowest set bit of any.  At most 24 bits (integers of a
 /// grid, short binary fractions), the one-root computations fit in
@@ -627,6 +625,8 @@ struct Coordinate_span {
   bool is_short() const { return highest - lowest <= 24; }
 };
 
+/// An event time of the filtered traits: an interval that encloses it, and
+/// what is needed to evaluate it again more precisely on demand.
 template <class Site_2>
 class Filtered_event_time
 {
@@ -1001,11 +1001,7 @@ private:
           radius = circle.r.to_double();
           return true;
         };
-        try {
-          return one_root(Progressive_medial_axes::internal::Small_one_root());
-        } catch(Progressive_medial_axes::internal::Small_rational_overflow&) {
-          return one_root(Progressive_medial_axes::internal::One_root_rational());
-        }
+        return with_one_root_numbers(one_root);
       }, short_coordinates(s, s));
     if(decided)
       return *decided;
@@ -1052,17 +1048,23 @@ private:
           return false;
         return std::nullopt;
       },
-      [&]() -> std::optional<bool> {
-        try {
-          return equal(Progressive_medial_axes::internal::Small_one_root());
-        } catch(Progressive_medial_axes::internal::Small_rational_overflow&) {
-          return equal(Progressive_medial_axes::internal::One_root_rational());
-        }
-      }, short_coordinates(s, t));
+      [&]() -> std::optional<bool> { return with_one_root_numbers(equal); }, short_coordinates(s, t));
     if(decided)
       return *decided;
     Progressive_medial_axes::internal::Nested_root_context context;
     return equal(Nested());
+  }
+
+  // f(number) with the small one-root numbers, or with the GMP ones where
+  // they overflow.
+  template <class F>
+  static auto with_one_root_numbers(const F& f)
+  {
+    try {
+      return f(Progressive_medial_axes::internal::Small_one_root());
+    } catch(Progressive_medial_axes::internal::Small_rational_overflow&) {
+      return f(Progressive_medial_axes::internal::One_root_rational());
+    }
   }
 
   // Whether the sites of two triples have short coordinates (Coordinate_span).

@@ -68,11 +68,11 @@ inline int side_towards(const std::vector<Triangle>& triangles, int u, int t)
 ///
 /// Points whose successor is -1 are not part of the polygon (the vertices
 /// that boundary evolution removed from its coarse shape) and are left out.
-/// The constrained Delaunay triangulation of a polygon's rings, in two
-/// phases: the Delaunay triangulation of the points, which any finite points
-/// have (the one-shot builds it while another thread validates the input),
-/// then the edges as constraints and the triangles inside, which need a
-/// valid polygon.
+///
+/// In two phases: the Delaunay triangulation of the points, which any finite
+/// points have (the one-shot builds it while another thread validates the
+/// input), then the edges as constraints and the triangles inside, which
+/// need a valid polygon.
 template <class Kernel>
 class Ring_triangulation
 {
@@ -259,6 +259,7 @@ std::vector<Triangle> Ring_triangulation<Kernel>::finish(Data& data)
   return tris;
 }
 
+/// Both phases of Ring_triangulation at once.
 template <class Kernel, class Data>
 std::vector<Triangle> triangulate_rings(Data& data)
 {
