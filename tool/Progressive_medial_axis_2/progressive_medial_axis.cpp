@@ -31,6 +31,9 @@
 #endif
 
 #include <unistd.h>
+#ifdef __GLIBC__
+#include <malloc.h>
+#endif
 
 #include <chrono>
 #include <cmath>
@@ -408,6 +411,15 @@ int run(const Options& o)
   typedef Polygon_job<Traits> Job;
 
   auto t0 = std::chrono::steady_clock::now();
+  int threads = 1;
+#ifdef CGAL_LINKED_WITH_TBB
+  threads = o.threads > 0 ? o.threads : tbb::info::default_concurrency();
+  // exact kernels run sequentially (see CGAL::medial_axis_2)
+  if(!std::is_floating_point<typename Traits::Kernel::FT>::value) threads = 1;
+  tbb::task_arena arena(threads);
+  // start the worker threads now, while this thread reads the input
+  if(threads > 1) arena.enqueue([] {});
+#endif
   std::vector<pma_tool::Input_polygon<CGAL::Epick::Point_2> > input;
   try {
     input = pma_tool::read_polygons_file<CGAL::Epick::Point_2>(o.input);
@@ -437,13 +449,6 @@ int run(const Options& o)
   }
   double read_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 
-  int threads = 1;
-#ifdef CGAL_LINKED_WITH_TBB
-  threads = o.threads > 0 ? o.threads : tbb::info::default_concurrency();
-  // exact kernels run sequentially (see CGAL::medial_axis_2)
-  if(!std::is_floating_point<typename Traits::Kernel::FT>::value) threads = 1;
-  tbb::task_arena arena(threads);
-#endif
   auto in_arena = [&](const auto& f) {
 #ifdef CGAL_LINKED_WITH_TBB
     arena.execute(f);
@@ -876,6 +881,15 @@ int run(const Options& o)
 
 int main(int argc, char** argv)
 {
+#ifdef __GLIBC__
+  // glibc grows and shrinks each thread's heap in small steps, and with two
+  // threads every shrink (and every growth of a thread's heap) makes the
+  // kernel flush the other CPU's TLB: a few milliseconds of a run on a small
+  // polygon (RESULTS.md, "Start-up of small runs").  Grow in 16 MB steps and
+  // give memory back only above 256 MB; the pages never touched cost nothing.
+  mallopt(M_TOP_PAD, 16 << 20);
+  mallopt(M_TRIM_THRESHOLD, 256 << 20);
+#endif
   Options o = parse(argc, argv);
   int status = 1;
   try {
