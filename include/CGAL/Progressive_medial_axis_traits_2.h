@@ -198,11 +198,23 @@ Time_kind switch_time_kind(const Site_& line, const Site_& a, const Site_& b)
 /// vanishing event does not exist (for a switch time, when the disk cannot
 /// be built: the caller then falls back on the stored vertex).  With `rad`,
 /// the time is `t + sqrt(*rad)` (the square root of a vanishing time is not
-/// taken; *rad = 0 for the other kinds).
+/// taken; *rad = 0 for the other kinds).  Where the number type (intervals)
+/// cannot decide a branch, Uncertain_conversion_exception is thrown, except
+/// that with `undecided` the last tests of a vanishing time (does the disk
+/// touch the segments, does it meet the separator) set `*undecided` and
+/// return false instead, the common case on integer grids.
 template <class NT, class Site_, class Convert>
 bool evaluate_time(Time_kind kind, const Site_& c, const Site_* s, const Triple_relations& rel,
-                   const Convert& cv, NT& t, NT* rad = nullptr)
+                   const Convert& cv, NT& t, NT* rad = nullptr, bool* undecided = nullptr)
 {
+  auto outcome = [undecided](int found) {
+    if(found >= 0)
+      return found == 1;
+    if(undecided == nullptr)
+      throw Uncertain_conversion_exception("evaluate_time: undecided comparison");
+    *undecided = true;
+    return false;
+  };
   if(rad != nullptr)
     *rad = NT(0);
   NT px = cv(c.p.x()), py = cv(c.p.y()), qx = cv(c.q.x()), qy = cv(c.q.y());
@@ -239,11 +251,11 @@ bool evaluate_time(Time_kind kind, const Site_& c, const Site_* s, const Triple_
   }
   // a vanishing point needs a disk that touches the segments themselves
   const double tolerance = std::is_floating_point<NT>::value ? 1e-12 : 0.0;
-  if(!touches_segments(sn, rel, circle, tolerance))
+  if(!outcome(touches_segments(sn, rel, circle, tolerance)))
     return false;
   if(rad != nullptr)
-    return chord_far_end_parts(px, py, qx, qy, circle, t, *rad);
-  return chord_far_end(px, py, qx, qy, circle, t);
+    return outcome(chord_far_end_parts(px, py, qx, qy, circle, t, *rad));
+  return outcome(chord_far_end(px, py, qx, qy, circle, t));
 }
 
 struct Identity_convert {
@@ -648,10 +660,11 @@ public:
       try {
         To_nt_convert<Mpfr> cv;
         Mpfr t;
-        if(evaluate_time<Mpfr>(kind_, c_, s_, rel_, cv, t)) {
+        bool undecided = false;
+        if(evaluate_time<Mpfr>(kind_, c_, s_, rel_, cv, t, nullptr, &undecided)) {
           mpfr_ = std::make_shared<Mpfr>(t);
           mpfr_state_ = 1;
-        } else {
+        } else if(!undecided) {
           mpfr_state_ = 0;
         }
       } catch(Uncertain_conversion_exception&) {
@@ -819,10 +832,12 @@ private:
       try {
         Interval v;
         Progressive_medial_axes::internal::To_nt_convert<Interval> cv;
-        bool ok = Progressive_medial_axes::internal::evaluate_time<Interval>(kind, line, t.s_, t.rel_, cv, v);
-        if(!ok)
+        bool undecided = false;
+        bool ok = Progressive_medial_axes::internal::evaluate_time<Interval>(kind, line, t.s_, t.rel_, cv, v, nullptr,
+                                                                               &undecided);
+        if(!ok && !undecided)
           return false;
-        if(CGAL_NTS is_finite(v.inf()) && CGAL_NTS is_finite(v.sup())) {
+        if(ok && CGAL_NTS is_finite(v.inf()) && CGAL_NTS is_finite(v.sup())) {
           t.approx_ = v;
           return true;
         }

@@ -52,6 +52,15 @@ void check_sign_is_clear(const NT& x, const NT& magnitude)
   }
 }
 
+/// A comparison as 1 (true) or 0 (false), or -1 where the number type (an
+/// interval) cannot decide it.  The last tests of an event time report an
+/// undecided comparison by this value rather than by an exception: on
+/// integer grids most evaluations the intervals cannot decide end there, and
+/// throwing costs about a microsecond each (RESULTS.md, "Start-up of small
+/// runs").
+inline int decided(bool b) { return b ? 1 : 0; }
+inline int decided(const Uncertain<bool>& b) { return is_certain(b) ? (get_certain(b) ? 1 : 0) : -1; }
+
 /// A generator in number type `NT`: a point `(ax, ay)`, or the open segment
 /// from `(ax, ay)` to `(bx, by)` whose interior side (the shape) is on its left.
 template <class NT>
@@ -483,13 +492,14 @@ bool medial_circle(const Site_nt<NT> s[3], const Triple_relations& rel, Circle_n
 }
 
 /// Whether the disk touches every segment site of the triple within the
-/// closed segment (not only its supporting line).  A segment whose contact
-/// is known to be one of its endpoints (a point site at that endpoint, a
-/// flat join) is not tested.  `tolerance` (relative, 0 for exact number
-/// types) admits contacts just beyond an endpoint.
+/// closed segment (not only its supporting line): 1 if it does, 0 if not,
+/// -1 if the number type cannot decide it (see `decided()`).  A segment
+/// whose contact is known to be one of its endpoints (a point site at that
+/// endpoint, a flat join) is not tested.  `tolerance` (relative, 0 for exact
+/// number types) admits contacts just beyond an endpoint.
 template <class NT>
-bool touches_segments(const Site_nt<NT> s[3], const Triple_relations& rel, const Circle_nt<NT>& c,
-                      double tolerance)
+int touches_segments(const Site_nt<NT> s[3], const Triple_relations& rel, const Circle_nt<NT>& c,
+                     double tolerance)
 {
   for(int i = 0; i < 3; ++i) {
     if(s[i].is_point) continue;
@@ -501,19 +511,22 @@ bool touches_segments(const Site_nt<NT> s[3], const Triple_relations& rel, const
     if(known) continue;
     NT dx = s[i].bx - s[i].ax, dy = s[i].by - s[i].ay;
     NT slack = NT(tolerance) * (dx * dx + dy * dy);
-    if((c.x - s[i].ax) * dx + (c.y - s[i].ay) * dy < -slack) return false;
-    if((s[i].bx - c.x) * dx + (s[i].by - c.y) * dy < -slack) return false;
+    const int before = decided((c.x - s[i].ax) * dx + (c.y - s[i].ay) * dy < -slack);
+    if(before != 0) return before < 0 ? -1 : 0;
+    const int beyond = decided((s[i].bx - c.x) * dx + (s[i].by - c.y) * dy < -slack);
+    if(beyond != 0) return beyond < 0 ? -1 : 0;
   }
-  return true;
+  return 1;
 }
 
 /// Position, along the separator from `P` to `Q`, of the point where the
 /// retracting tip meets the circle: the end of the chord nearer to `Q`,
-/// scaled by |PQ|^2 (0 at P, |PQ|^2 at Q), as `alpha + sqrt(rad)`.  False if
-/// the circle misses the line.
+/// scaled by |PQ|^2 (0 at P, |PQ|^2 at Q), as `alpha + sqrt(rad)`.  1 if
+/// found, 0 if the circle misses the line, -1 if the number type cannot
+/// decide which (see `decided()`).
 template <class NT>
-bool chord_far_end_parts(const NT& px, const NT& py, const NT& qx, const NT& qy,
-                         const Circle_nt<NT>& c, NT& alpha, NT& rad)
+int chord_far_end_parts(const NT& px, const NT& py, const NT& qx, const NT& qy,
+                        const Circle_nt<NT>& c, NT& alpha, NT& rad)
 {
   NT dx = qx - px, dy = qy - py;
   NT vx = c.x - px, vy = c.y - py;
@@ -521,28 +534,31 @@ bool chord_far_end_parts(const NT& px, const NT& py, const NT& qx, const NT& qy,
   NT h = cross2(dx, dy, vx, vy);
   NT r2d2 = c.r * c.r * d2;
   rad = r2d2 - h * h;
-  if(rad < 0) {
+  const int misses = decided(rad < 0);
+  if(misses < 0) return -1;
+  if(misses) {
     // With floating-point numbers, a circle through an endpoint of the
     // separator or tangent to it (an exact tie, common on integer grids)
     // can come out a rounding error short of the line: count it as tangent.
     if(!std::is_floating_point<NT>::value || rad < -NT(1e-12) * r2d2)
-      return false;
+      return 0;
     rad = NT(0);
   }
   alpha = dx * vx + dy * vy;
-  return true;
+  return 1;
 }
 
 /// The same position as one number.
 template <class NT>
-bool chord_far_end(const NT& px, const NT& py, const NT& qx, const NT& qy,
-                   const Circle_nt<NT>& c, NT& t)
+int chord_far_end(const NT& px, const NT& py, const NT& qx, const NT& qy,
+                  const Circle_nt<NT>& c, NT& t)
 {
   NT alpha, rad;
-  if(!chord_far_end_parts(px, py, qx, qy, c, alpha, rad))
-    return false;
+  const int found = chord_far_end_parts(px, py, qx, qy, c, alpha, rad);
+  if(found <= 0)
+    return found;
   t = alpha + nt_sqrt_nonnegative(rad);
-  return true;
+  return 1;
 }
 
 /// The squared distance from the centre of `c` to the closed segment from
