@@ -11,7 +11,8 @@ the shapes with make_degenerate (the sizes of the degenerate table and about
 make_glyphs.py (several fonts, data/glyphs/), then measures for every shape:
 
 - ours: the whole `progressive_medial_axis` process with the default traits
-  (exact decisions), median of N runs, and its per-stage decision counts
+  (exact decisions), median of N runs (at least 21 for processes under
+  50 ms; ours, Epick and before run in turn), and its per-stage decision counts
   from --stats (one-root, MPFR and nested-root stages; a run of its own);
 - Epick: the same process with --traits epick;
 - SDG: Segment_Delaunay_graph_2 filtered construction alone (bench_time
@@ -67,6 +68,32 @@ def median_process(cmd, runs, timeout):
     return statistics.median(times), out
 
 
+def median_processes(cmds, runs, timeout):
+    """Medians of the wall times of several commands, run in turn (one run of
+    each, then the next round), so that a slower or faster spell of the
+    machine falls on all of them.  Processes of under 50 ms get at least 21
+    rounds: at 5 to 15 ms they move by 20% from run to run.  A command that
+    fails or runs out of time gives None (and is not run again)."""
+    times = [[] for _ in cmds]
+    rounds = runs
+    r = 0
+    while r < rounds:
+        for i, cmd in enumerate(cmds):
+            if times[i] is None:
+                continue
+            t, _ = run_process(cmd, timeout)
+            if t is None:
+                times[i] = None
+            else:
+                times[i].append(t)
+        if r == 0:
+            firsts = [ts[0] for ts in times if ts]
+            if firsts and max(firsts) < 0.05:
+                rounds = max(runs, 21)
+        r += 1
+    return [statistics.median(ts) if ts else None for ts in times]
+
+
 def stats_of(text):
     d = {}
     for line in text.splitlines():
@@ -117,13 +144,19 @@ def main():
         name = os.path.relpath(path, DATA)[:-4]
         # (--stats in a run of its own: in one-shot mode it also counts the
         # region-growing steps, a triangulation after the timed work)
-        ours, _ = median_process([TOOL, path], a.runs, a.timeout)
         s = stats_of(median_process([TOOL, "--stats", path], 1, a.timeout)[1])
-        epick, _ = median_process([TOOL, "--traits", "epick", path], a.runs, a.timeout)
-        sdg = sdg_time(path, a.runs, a.timeout)
         before = None
+        cmds = [[TOOL, path], [TOOL, "--traits", "epick", path]]
         if a.before:
+            # (an older build can take minutes: then once)
             before, _ = median_process([a.before, path], 1, a.timeout)
+            if before is not None and before < 1:
+                cmds.append([a.before, path])
+        times = median_processes(cmds, a.runs, a.timeout)
+        ours, epick = times[0], times[1]
+        if len(times) > 2:
+            before = times[2]
+        sdg = sdg_time(path, max(a.runs, 21) if ours is not None and ours < 0.05 else a.runs, a.timeout)
         stage = lambda k: int(s.get("filter_%s_evaluations" % k, 0)) + int(s.get("filter_%s_comparisons" % k, 0))
         ratio = lambda x, y: "%.2f" % (x / y) if x and y else "-"
         row = "| %s | %s | %s | %s | %s | %s | %s | %s | %s | %d | %d | %d |" % (
