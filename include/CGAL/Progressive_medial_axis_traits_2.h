@@ -200,9 +200,10 @@ Time_kind switch_time_kind(const Site_& line, const Site_& a, const Site_& b)
 /// the time is `t + sqrt(*rad)` (the square root of a vanishing time is not
 /// taken; *rad = 0 for the other kinds).  Where the number type (intervals)
 /// cannot decide a branch, Uncertain_conversion_exception is thrown, except
-/// that with `undecided` the last tests of a vanishing time (does the disk
-/// touch the segments, does it meet the separator) set `*undecided` and
-/// return false instead, the common case on integer grids.
+/// that with `undecided` the PSS disk and the last tests of a vanishing time
+/// (does the disk touch the segments, does it meet the separator) set
+/// `*undecided` and return false instead: where most undecided evaluations
+/// of integer grids end.
 template <class NT, class Site_, class Convert>
 bool evaluate_time(Time_kind kind, const Site_& c, const Site_* s, const Triple_relations& rel,
                    const Convert& cv, NT& t, NT* rad = nullptr, bool* undecided = nullptr)
@@ -233,7 +234,7 @@ bool evaluate_time(Time_kind kind, const Site_& c, const Site_* s, const Triple_
   }
   Site_nt<NT> sn[3] = {site_nt<NT>(s[0], cv), site_nt<NT>(s[1], cv), site_nt<NT>(s[2], cv)};
   Circle_nt<NT> circle;
-  if(!medial_circle(sn, rel, circle))
+  if(!outcome(medial_circle_decided(sn, rel, circle)))
     return false;
   if constexpr(std::is_floating_point<NT>::value) {
     // a circle built in floating point from nearly degenerate sites can be

@@ -224,10 +224,11 @@ NT cross2(const NT& ax, const NT& ay, const NT& bx, const NT& by)
 }
 
 /// Strict counter-clockwise cyclic order of three directions: at least two
-/// of the three consecutive cross products are positive.
+/// of the three consecutive cross products are positive.  1 if so, 0 if not,
+/// -1 if the number type cannot decide it (see `decided()`).
 template <class NT>
-bool ccw_directions(const NT& ux, const NT& uy, const NT& vx, const NT& vy,
-                    const NT& wx, const NT& wy)
+int ccw_directions(const NT& ux, const NT& uy, const NT& vx, const NT& vy,
+                   const NT& wx, const NT& wy)
 {
   int positive = 0;
   const NT a = cross2(ux, uy, vx, vy), b = cross2(vx, vy, wx, wy), c = cross2(wx, wy, ux, uy);
@@ -237,10 +238,12 @@ bool ccw_directions(const NT& ux, const NT& uy, const NT& vx, const NT& vy,
     check_sign_is_clear(b, nv * nw);
     check_sign_is_clear(c, nw * nu);
   }
-  if(a > 0) ++positive;
-  if(b > 0) ++positive;
-  if(c > 0) ++positive;
-  return positive >= 2;
+  for(const NT* x : {&a, &b, &c}) {
+    const int d = decided(*x > 0);
+    if(d < 0) return -1;
+    positive += d;
+  }
+  return positive >= 2 ? 1 : 0;
 }
 
 /// Circle centred on the normal of `l` at `(zx, zy)` (tangent to the line
@@ -336,18 +339,21 @@ bool circle_pps(const Site_nt<NT>& p, const Site_nt<NT>& q, const Site_nt<NT>& s
 }
 
 /// PSS: the circle through p tangent to segments s1 and s2 on their
-/// interior sides, with p, s1, s2 in counter-clockwise order.
+/// interior sides, with p, s1, s2 in counter-clockwise order.  1 if found,
+/// 0 if there is none, -1 if the number type cannot decide which (see
+/// `decided()`: on rectilinear input the discriminant is often exactly 0).
 template <class NT>
-bool circle_pss(const Site_nt<NT>& p, const Site_nt<NT>& s1, const Site_nt<NT>& s2,
-                Circle_nt<NT>& c)
+int circle_pss(const Site_nt<NT>& p, const Site_nt<NT>& s1, const Site_nt<NT>& s2,
+               Circle_nt<NT>& c)
 {
   Line_nt<NT> l1 = oriented_line(s1), l2 = oriented_line(s2);
   NT e1 = signed_distance(l1, p.ax, p.ay);
   NT e2 = signed_distance(l2, p.ax, p.ay);
   NT gx = l1.nx - l2.nx, gy = l1.ny - l2.ny;
   NT g2 = gx * gx + gy * gy;
-  if(!(g2 > 0))
-    return false;                               // parallel, same side
+  const int apart = decided(g2 > 0);
+  if(apart <= 0)
+    return apart;                               // (0: parallel, same side)
   // centre x (relative to p) on the bisector g.x = e2 - e1
   NT x0x = (e2 - e1) * gx / g2, x0y = (e2 - e1) * gy / g2;
   NT ux = -gy, uy = gx;
@@ -358,27 +364,41 @@ bool circle_pss(const Site_nt<NT>& p, const Site_nt<NT>& s1, const Site_nt<NT>& 
   NT B = R0 * rho;
   NT C = x0x * x0x + x0y * x0y - R0 * R0;
   NT disc = B * B - A * C;
-  if(disc < 0)
-    return false;
+  const int no_root = decided(disc < 0);
+  if(no_root != 0)
+    return no_root < 0 ? -1 : 0;
   NT sd = nt_sqrt_nonnegative(disc);
-  NT q = (B >= 0) ? B + sd : B - sd;
+  const int b_nonnegative = decided(B >= 0);
+  if(b_nonnegative < 0)
+    return -1;
+  NT q = b_nonnegative ? B + sd : B - sd;
   bool found = false;
   NT best_r(0);
   for(int i = 0; i < 2; ++i) {
     NT lambda;
     if(i == 0) {
-      if(!(A > 0)) continue;
+      const int a_positive = decided(A > 0);
+      if(a_positive < 0) return -1;
+      if(!a_positive) continue;
       lambda = q / A;
     } else {
-      if(q == 0) continue;
+      const int q_zero = decided(q == 0);
+      if(q_zero < 0) return -1;
+      if(q_zero) continue;
       lambda = C / q;
     }
     NT xx = x0x + lambda * ux, xy = x0y + lambda * uy;
     NT r = R0 + lambda * rho;
-    if(!(r > 0)) continue;
-    if(!ccw_directions(xx, xy, l1.nx, l1.ny, l2.nx, l2.ny)) continue;
+    const int r_positive = decided(r > 0);
+    if(r_positive < 0) return -1;
+    if(!r_positive) continue;
+    const int ccw = ccw_directions(xx, xy, l1.nx, l1.ny, l2.nx, l2.ny);
+    if(ccw < 0) return -1;
+    if(!ccw) continue;
     if(found) check_sign_is_clear(NT(r - best_r), NT(r + best_r));
-    if(!found || r < best_r) {
+    const int smaller = found ? decided(r < best_r) : 1;
+    if(smaller < 0) return -1;
+    if(smaller) {
       found = true;
       best_r = r;
       c.x = p.ax + xx;
@@ -386,7 +406,7 @@ bool circle_pss(const Site_nt<NT>& p, const Site_nt<NT>& s1, const Site_nt<NT>& 
       c.r = r;
     }
   }
-  return found;
+  return found ? 1 : 0;
 }
 
 /// SSS: the circle tangent to three segments on their interior sides, in
@@ -420,12 +440,13 @@ bool circle_sss(const Site_nt<NT>& s1, const Site_nt<NT>& s2, const Site_nt<NT>&
 }
 
 /// The disk tangent to the three generators `s[0], s[1], s[2]` whose cells
-/// meet at its centre in this counter-clockwise order.  Returns false when
-/// no such disk exists.  `rel` carries the exact symbolic relations between
+/// meet at its centre in this counter-clockwise order: 1 if found, 0 when
+/// no such disk exists, -1 when the number type cannot decide which (the PSS
+/// construction reports this; the others throw, as `medial_circle()` does).  `rel` carries the exact symbolic relations between
 /// the sites (shared endpoints, flat joins), which select the degenerate
 /// constructions.
 template <class NT>
-bool medial_circle(const Site_nt<NT> s[3], const Triple_relations& rel, Circle_nt<NT>& c)
+int medial_circle_decided(const Site_nt<NT> s[3], const Triple_relations& rel, Circle_nt<NT>& c)
 {
   for(int i = 0; i < 3; ++i)
     for(int j = 0; j < 3; ++j)
@@ -489,6 +510,17 @@ bool medial_circle(const Site_nt<NT> s[3], const Triple_relations& rel, Circle_n
     }
   }
   return circle_sss(s[0], s[1], s[2], c);
+}
+
+/// The same, as a bool: where the number type (intervals) cannot decide a
+/// branch, Uncertain_conversion_exception is thrown.
+template <class NT>
+bool medial_circle(const Site_nt<NT> s[3], const Triple_relations& rel, Circle_nt<NT>& c)
+{
+  const int found = medial_circle_decided(s, rel, c);
+  if(found < 0)
+    throw Uncertain_conversion_exception("medial_circle: undecided comparison");
+  return found == 1;
 }
 
 /// Whether the disk touches every segment site of the triple within the
