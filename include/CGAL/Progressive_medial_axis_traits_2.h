@@ -966,10 +966,11 @@ private:
       Protect_FPU_rounding<true> protection;
       try {
         Progressive_medial_axes::internal::Circle_nt<Interval> circle;
-        if(!disk_nt<Interval>(s, rel, circle))
+        const int found = disk_nt_decided<Interval>(s, rel, circle);
+        if(found == 0)
           return false;
-        branches_decided = true;
-        if(circle.x.is_point() && circle.y.is_point() && circle.r.is_point() && std::isfinite(circle.x.inf()) &&
+        branches_decided = found > 0;
+        if(branches_decided && circle.x.is_point() && circle.y.is_point() && circle.r.is_point() && std::isfinite(circle.x.inf()) &&
            std::isfinite(circle.y.inf()) && std::isfinite(circle.r.inf())) {
           centre = Point_2(circle.x.inf(), circle.y.inf());
           radius = circle.r.inf();
@@ -1041,9 +1042,14 @@ private:
       Protect_FPU_rounding<true> protection;
       try {
         Progressive_medial_axes::internal::Circle_nt<Interval> a, b;
-        if(!disk_nt<Interval>(s, rs, a) || !disk_nt<Interval>(t, rt, b))
+        const int found_a = disk_nt_decided<Interval>(s, rs, a);
+        if(found_a == 0)
           return false;
-        if(certainly(a.x != b.x) || certainly(a.y != b.y) || certainly(a.r != b.r))
+        const int found_b = disk_nt_decided<Interval>(t, rt, b);
+        if(found_b == 0)
+          return false;
+        if(found_a > 0 && found_b > 0 &&
+           (certainly(a.x != b.x) || certainly(a.y != b.y) || certainly(a.r != b.r)))
           return false;
       } catch(Uncertain_conversion_exception&) {
       }
@@ -1149,10 +1155,21 @@ private:
   template <class NT>
   static bool disk_nt(const Site_2* s, const Progressive_medial_axes::internal::Triple_relations& rel, Progressive_medial_axes::internal::Circle_nt<NT>& circle)
   {
+    const int found = disk_nt_decided<NT>(s, rel, circle);
+    if(found < 0)
+      throw Uncertain_conversion_exception("disk_nt: undecided comparison");
+    return found == 1;
+  }
+  // The same, 1 if the disk exists, 0 if not, -1 where the number type
+  // (intervals) cannot decide a branch of the PSS disk (the other
+  // constructions throw there).
+  template <class NT>
+  static int disk_nt_decided(const Site_2* s, const Progressive_medial_axes::internal::Triple_relations& rel, Progressive_medial_axes::internal::Circle_nt<NT>& circle)
+  {
     Progressive_medial_axes::internal::To_nt_convert<NT> cv;
     Progressive_medial_axes::internal::Site_nt<NT> sn[3] = {Progressive_medial_axes::internal::site_nt<NT>(s[0], cv), Progressive_medial_axes::internal::site_nt<NT>(s[1], cv),
                                          Progressive_medial_axes::internal::site_nt<NT>(s[2], cv)};
-    return Progressive_medial_axes::internal::medial_circle(sn, rel, circle);
+    return Progressive_medial_axes::internal::medial_circle_decided(sn, rel, circle);
   }
 };
 
