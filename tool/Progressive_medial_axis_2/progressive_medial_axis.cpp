@@ -420,6 +420,8 @@ int run(const Options& o)
   // start the worker threads now, while this thread reads the input
   if(threads > 1) arena.enqueue([] {});
 #endif
+  // (time_read is the reading alone; time_total counts TBB's start too)
+  const auto t_read = std::chrono::steady_clock::now();
   std::vector<pma_tool::Input_polygon<CGAL::Epick::Point_2> > input;
   try {
     input = pma_tool::read_polygons_file<CGAL::Epick::Point_2>(o.input);
@@ -447,7 +449,7 @@ int run(const Options& o)
       return 2;
     }
   }
-  double read_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  double read_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t_read).count();
 
   auto in_arena = [&](const auto& f) {
 #ifdef CGAL_LINKED_WITH_TBB
