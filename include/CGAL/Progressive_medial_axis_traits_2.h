@@ -199,20 +199,18 @@ Time_kind switch_time_kind(const Site_& line, const Site_& a, const Site_& b)
 /// be built: the caller then falls back on the stored vertex).  With `rad`,
 /// the time is `t + sqrt(*rad)` (the square root of a vanishing time is not
 /// taken; *rad = 0 for the other kinds).  Where the number type (intervals)
-/// cannot decide a branch, Uncertain_conversion_exception is thrown, except
-/// that with `undecided` the PSS disk and the last tests of a vanishing time
-/// (does the disk touch the segments, does it meet the separator) set
-/// `*undecided` and return false instead: where most undecided evaluations
+/// cannot decide a branch (of the disk, or of the last tests of a vanishing
+/// time: does the disk touch the segments, does it meet the separator),
+/// Uncertain_conversion_exception is thrown, or with `undecided`,
+/// `*undecided` is set and false returned: where most undecided evaluations
 /// of integer grids end.
 template <class NT, class Site_, class Convert>
 bool evaluate_time(Time_kind kind, const Site_& c, const Site_* s, const Triple_relations& rel,
                    const Convert& cv, NT& t, NT* rad = nullptr, bool* undecided = nullptr)
 {
   auto outcome = [undecided](int found) {
-    if(found >= 0)
-      return found == 1;
-    if(undecided == nullptr)
-      throw Uncertain_conversion_exception("evaluate_time: undecided comparison");
+    if(found >= 0 || undecided == nullptr)
+      return certain_or_throw(found, "evaluate_time: undecided comparison");
     *undecided = true;
     return false;
   };
@@ -1155,14 +1153,11 @@ private:
   template <class NT>
   static bool disk_nt(const Site_2* s, const Progressive_medial_axes::internal::Triple_relations& rel, Progressive_medial_axes::internal::Circle_nt<NT>& circle)
   {
-    const int found = disk_nt_decided<NT>(s, rel, circle);
-    if(found < 0)
-      throw Uncertain_conversion_exception("disk_nt: undecided comparison");
-    return found == 1;
+    return Progressive_medial_axes::internal::certain_or_throw(disk_nt_decided<NT>(s, rel, circle),
+                                                              "disk_nt: undecided comparison");
   }
   // The same, 1 if the disk exists, 0 if not, -1 where the number type
-  // (intervals) cannot decide a branch of the PSS disk (the other
-  // constructions throw there).
+  // (intervals) cannot decide a branch of the construction.
   template <class NT>
   static int disk_nt_decided(const Site_2* s, const Progressive_medial_axes::internal::Triple_relations& rel, Progressive_medial_axes::internal::Circle_nt<NT>& circle)
   {

@@ -53,13 +53,24 @@ void check_sign_is_clear(const NT& x, const NT& magnitude)
 }
 
 /// A comparison as 1 (true) or 0 (false), or -1 where the number type (an
-/// interval) cannot decide it.  The last tests of an event time report an
-/// undecided comparison by this value rather than by an exception: on
-/// integer grids most evaluations the intervals cannot decide end there, and
-/// throwing costs about a microsecond each (RESULTS.md, "Start-up of small
-/// runs").
+/// interval) cannot decide it.  The disk constructions and the tests of an
+/// event time report an undecided comparison by this value rather than by
+/// an exception: on integer grids the intervals leave many undecided, and
+/// throwing costs about a microsecond each, more for the first throw of a
+/// process (RESULTS.md, "Start-up of small runs").
 inline int decided(bool b) { return b ? 1 : 0; }
 inline int decided(const Uncertain<bool>& b) { return is_certain(b) ? (get_certain(b) ? 1 : 0) : -1; }
+
+/// The decision `found` (1, 0 or -1 as `decided()` gives) as a bool, for the
+/// callers that need one: where it is undecided, throws
+/// Uncertain_conversion_exception (`what` names the caller), which sends
+/// the evaluation on to the next stage.
+inline bool certain_or_throw(int found, const char* what)
+{
+  if(found < 0)
+    throw Uncertain_conversion_exception(what);
+  return found == 1;
+}
 
 /// A generator in number type `NT`: a point `(ax, ay)`, or the open segment
 /// from `(ax, ay)` to `(bx, by)` whose interior side (the shape) is on its left.
@@ -169,27 +180,41 @@ Line_nt<NT> oriented_line(const Site_nt<NT>& s)
 /// The interval stage's lines of segments whose end points are doubles,
 /// kept in a small direct-mapped table per thread (a hit costs a hash and
 /// four comparisons; the line costs an interval square root and division).
-/// The table is zeroed memory from calloc (an entry of zeros is unused): the
-/// system maps its pages as they are first written, so a small polygon does
-/// not pay for the whole table (value-initialising it cost a tenth of a
-/// millisecond at the first call of every thread).
+/// The table is zeroed memory from calloc (an entry of zeros is unused: no
+/// segment has length zero).  It starts with 256 entries and grows to 4,096
+/// as misses come (a new table each time, the old entries dropped), so that
+/// a small polygon touches a few pages only: a table of 4,096 entries at
+/// once was a third of the page faults of a polygon of 268 vertices.
 template <>
 struct Oriented_line_hook<Interval_nt<false> > {
   typedef Interval_nt<false> I;
   struct Entry {   // (plain data: all zeros is an unused entry)
     double ax, ay, bx, by;
     double line[6];   // nx, ny, k: inf and sup of each
-    std::uint64_t used;
   };
-  struct Free {
-    void operator()(Entry* p) const { std::free(p); }
+  struct Table {
+    Entry* entries = nullptr;
+    unsigned bits = 0;          // 2^bits entries
+    std::size_t misses = 0;     // since the table was made
+    ~Table() { std::free(entries); }
+    bool make(unsigned b)
+    {
+      Entry* e = static_cast<Entry*>(std::calloc(std::size_t(1) << b, sizeof(Entry)));
+      if(!e) return false;
+      std::free(entries);
+      entries = e;
+      bits = b;
+      misses = 0;
+      return true;
+    }
   };
   static Line_nt<I> apply(const Site_nt<I>& s)
   {
     if(!(s.ax.is_point() && s.ay.is_point() && s.bx.is_point() && s.by.is_point()))
       return compute_oriented_line(s);
-    static thread_local std::unique_ptr<Entry, Free> table(static_cast<Entry*>(std::calloc(4096, sizeof(Entry))));
-    if(!table) return compute_oriented_line(s);
+    static thread_local Table table;
+    if(!table.entries && !table.make(8))
+      return compute_oriented_line(s);
     const double c[4] = {s.ax.inf(), s.ay.inf(), s.bx.inf(), s.by.inf()};
     std::uint64_t h = 0x9e3779b97f4a7c15ull;
     for(double x : c) {
@@ -197,15 +222,16 @@ struct Oriented_line_hook<Interval_nt<false> > {
       std::memcpy(&b, &x, sizeof b);
       h = (h ^ b) * 0xff51afd7ed558ccdull;
     }
-    Entry& e = table.get()[std::size_t(h >> 52)];
-    if(e.used && e.ax == c[0] && e.ay == c[1] && e.bx == c[2] && e.by == c[3])
-      return Line_nt<I>{I(e.line[0], e.line[1]), I(e.line[2], e.line[3]), I(e.line[4], e.line[5])};
+    Entry* e = &table.entries[std::size_t(h >> (64 - table.bits))];
+    if(e->ax == c[0] && e->ay == c[1] && e->bx == c[2] && e->by == c[3])
+      return Line_nt<I>{I(e->line[0], e->line[1]), I(e->line[2], e->line[3]), I(e->line[4], e->line[5])};
     const Line_nt<I> line = compute_oriented_line(s);
-    e.ax = c[0]; e.ay = c[1]; e.bx = c[2]; e.by = c[3];
-    e.line[0] = line.nx.inf(); e.line[1] = line.nx.sup();
-    e.line[2] = line.ny.inf(); e.line[3] = line.ny.sup();
-    e.line[4] = line.k.inf(); e.line[5] = line.k.sup();
-    e.used = 1;
+    if(++table.misses > (std::size_t(2) << table.bits) && table.bits < 12 && table.make(table.bits + 2))
+      e = &table.entries[std::size_t(h >> (64 - table.bits))];
+    e->ax = c[0]; e->ay = c[1]; e->bx = c[2]; e->by = c[3];
+    e->line[0] = line.nx.inf(); e->line[1] = line.nx.sup();
+    e->line[2] = line.ny.inf(); e->line[3] = line.ny.sup();
+    e->line[4] = line.k.inf(); e->line[5] = line.k.sup();
     return line;
   }
 };
@@ -246,46 +272,53 @@ int ccw_directions(const NT& ux, const NT& uy, const NT& vx, const NT& vy,
   return positive >= 2 ? 1 : 0;
 }
 
+// The disk constructions below return 1 if the disk exists (and set `c`),
+// 0 if it does not, -1 if the number type cannot decide which (see
+// `decided()`).
+
 /// Circle centred on the normal of `l` at `(zx, zy)` (tangent to the line
 /// there) and tangent to the line `m` on its interior side.
 template <class NT>
-bool tangent_at_point_and_line(const NT& zx, const NT& zy, const Line_nt<NT>& l,
-                               const Line_nt<NT>& m, Circle_nt<NT>& c)
+int tangent_at_point_and_line(const NT& zx, const NT& zy, const Line_nt<NT>& l,
+                              const Line_nt<NT>& m, Circle_nt<NT>& c)
 {
   // 1 - cos(angle) of the two unit normals, without cancellation
   NT ex = l.nx - m.nx, ey = l.ny - m.ny;
   NT denom = (ex * ex + ey * ey) / NT(2);
-  if(!(denom > 0))
-    return false;
+  const int turns = decided(denom > 0);
+  if(turns <= 0)
+    return turns;
   NT lambda = signed_distance(m, zx, zy) / denom;
-  if(!(lambda > 0))
-    return false;
+  const int positive = decided(lambda > 0);
+  if(positive <= 0)
+    return positive;
   c.x = zx + lambda * l.nx;
   c.y = zy + lambda * l.ny;
   c.r = lambda;
-  return true;
+  return 1;
 }
 
 /// Circle centred on the normal of `l` at `(zx, zy)` and through the point `(px, py)`.
 template <class NT>
-bool tangent_at_point_and_point(const NT& zx, const NT& zy, const Line_nt<NT>& l,
-                                const NT& px, const NT& py, Circle_nt<NT>& c)
+int tangent_at_point_and_point(const NT& zx, const NT& zy, const Line_nt<NT>& l,
+                               const NT& px, const NT& py, Circle_nt<NT>& c)
 {
   NT vx = px - zx, vy = py - zy;
   NT denom = NT(2) * (l.nx * vx + l.ny * vy);
-  if(!(denom > 0))
-    return false;
+  const int inside = decided(denom > 0);
+  if(inside <= 0)
+    return inside;
   NT lambda = (vx * vx + vy * vy) / denom;
   c.x = zx + lambda * l.nx;
   c.y = zy + lambda * l.ny;
   c.r = lambda;
-  return true;
+  return 1;
 }
 
 /// PPP: the circle through three points in counter-clockwise order.
 template <class NT>
-bool circle_ppp(const Site_nt<NT>& p, const Site_nt<NT>& q, const Site_nt<NT>& s,
-                Circle_nt<NT>& c)
+int circle_ppp(const Site_nt<NT>& p, const Site_nt<NT>& q, const Site_nt<NT>& s,
+               Circle_nt<NT>& c)
 {
   NT bx = q.ax - p.ax, by = q.ay - p.ay;
   NT cx = s.ax - p.ax, cy = s.ay - p.ay;
@@ -296,14 +329,14 @@ bool circle_ppp(const Site_nt<NT>& p, const Site_nt<NT>& q, const Site_nt<NT>& s
   c.x = p.ax + ux;
   c.y = p.ay + uy;
   c.r = nt_sqrt(ux * ux + uy * uy);
-  return true;
+  return 1;
 }
 
 /// PPS: the circle through p and q, tangent to segment s on its interior
 /// side, with p, q, s in counter-clockwise order around the centre.
 template <class NT>
-bool circle_pps(const Site_nt<NT>& p, const Site_nt<NT>& q, const Site_nt<NT>& s,
-                Circle_nt<NT>& c)
+int circle_pps(const Site_nt<NT>& p, const Site_nt<NT>& q, const Site_nt<NT>& s,
+               Circle_nt<NT>& c)
 {
   Line_nt<NT> l = oriented_line(s);
   // local frame at p
@@ -318,30 +351,35 @@ bool circle_pps(const Site_nt<NT>& p, const Site_nt<NT>& q, const Site_nt<NT>& s
   NT M = nq * nq;
   NT hs = h * sp;
   NT D = hs * hs + M * (h * h - a2);
-  if(D < 0)
-    return false;
+  const int no_root = decided(D < 0);
+  if(no_root != 0)
+    return no_root < 0 ? -1 : 0;
   NT sd = nt_sqrt_nonnegative(D);
   NT lambda;
-  if(hs >= 0) {
-    if(!(M > 0))
-      return false;
+  const int hs_nonnegative = decided(hs >= 0);
+  if(hs_nonnegative < 0)
+    return -1;
+  if(hs_nonnegative) {
+    const int m_positive = decided(M > 0);
+    if(m_positive <= 0)
+      return m_positive;
     lambda = (hs + sd) / M;
   } else {
     lambda = (a2 - h * h) / (hs - sd);
   }
   NT r = h + lambda * sp;
-  if(!(r > 0))
-    return false;
+  const int r_positive = decided(r > 0);
+  if(r_positive <= 0)
+    return r_positive;
   c.x = p.ax + mx + lambda * wx;
   c.y = p.ay + my + lambda * wy;
   c.r = r;
-  return true;
+  return 1;
 }
 
 /// PSS: the circle through p tangent to segments s1 and s2 on their
-/// interior sides, with p, s1, s2 in counter-clockwise order.  1 if found,
-/// 0 if there is none, -1 if the number type cannot decide which (see
-/// `decided()`: on rectilinear input the discriminant is often exactly 0).
+/// interior sides, with p, s1, s2 in counter-clockwise order (on
+/// rectilinear input the discriminant is often exactly 0).
 template <class NT>
 int circle_pss(const Site_nt<NT>& p, const Site_nt<NT>& s1, const Site_nt<NT>& s2,
                Circle_nt<NT>& c)
@@ -412,8 +450,8 @@ int circle_pss(const Site_nt<NT>& p, const Site_nt<NT>& s1, const Site_nt<NT>& s
 /// SSS: the circle tangent to three segments on their interior sides, in
 /// counter-clockwise order.
 template <class NT>
-bool circle_sss(const Site_nt<NT>& s1, const Site_nt<NT>& s2, const Site_nt<NT>& s3,
-                Circle_nt<NT>& c)
+int circle_sss(const Site_nt<NT>& s1, const Site_nt<NT>& s2, const Site_nt<NT>& s3,
+               Circle_nt<NT>& c)
 {
   // local frame at the source of s1
   const NT ox = s1.ax, oy = s1.ay;
@@ -425,37 +463,38 @@ bool circle_sss(const Site_nt<NT>& s1, const Site_nt<NT>& s2, const Site_nt<NT>&
   NT g2x = l[1].nx - l[0].nx, g2y = l[1].ny - l[0].ny;
   NT g3x = l[2].nx - l[0].nx, g3y = l[2].ny - l[0].ny;
   NT det = cross2(g2x, g2y, g3x, g3y);
-  if(!(det > 0))
-    return false;
+  const int det_positive = decided(det > 0);
+  if(det_positive <= 0)
+    return det_positive;
   NT b2 = k[1] - k[0], b3 = k[2] - k[0];
   NT x = (b2 * g3y - b3 * g2y) / det;
   NT y = (g2x * b3 - b2 * g3x) / det;
   NT r = l[0].nx * x + l[0].ny * y - k[0];
-  if(!(r > 0))
-    return false;
+  const int r_positive = decided(r > 0);
+  if(r_positive <= 0)
+    return r_positive;
   c.x = ox + x;
   c.y = oy + y;
   c.r = r;
-  return true;
+  return 1;
 }
 
 /// The disk tangent to the three generators `s[0], s[1], s[2]` whose cells
 /// meet at its centre in this counter-clockwise order: 1 if found, 0 when
-/// no such disk exists, -1 when the number type cannot decide which (the PSS
-/// construction reports this; the others throw, as `medial_circle()` does).  `rel` carries the exact symbolic relations between
-/// the sites (shared endpoints, flat joins), which select the degenerate
-/// constructions.
+/// no such disk exists, -1 when the number type cannot decide which.
+/// `rel` carries the exact symbolic relations between the sites (shared
+/// endpoints, flat joins), which select the degenerate constructions.
 template <class NT>
 int medial_circle_decided(const Site_nt<NT> s[3], const Triple_relations& rel, Circle_nt<NT>& c)
 {
   for(int i = 0; i < 3; ++i)
     for(int j = 0; j < 3; ++j)
       if(i != j && rel.same[i][j])
-        return false;
+        return 0;
   int np = int(s[0].is_point) + int(s[1].is_point) + int(s[2].is_point);
   if(np == 3) {
     if(rel.ppp_orientation <= 0)
-      return false;
+      return 0;
     return circle_ppp(s[0], s[1], s[2], c);
   }
   if(np == 2) {
@@ -463,9 +502,9 @@ int medial_circle_decided(const Site_nt<NT> s[3], const Triple_relations& rel, C
     int k = s[0].is_point ? (s[1].is_point ? 2 : 1) : 0;   // index of the segment
     int ip = (k + 1) % 3, iq = (k + 2) % 3;
     if(rel.point_is_source[ip][k] || rel.point_is_target[iq][k])
-      return false;
+      return 0;
     if(rel.point_is_target[ip][k] && rel.point_is_source[iq][k])
-      return false;
+      return 0;
     if(rel.point_is_target[ip][k]) {
       Line_nt<NT> l = oriented_line(s[k]);
       return tangent_at_point_and_point(s[ip].ax, s[ip].ay, l, s[iq].ax, s[iq].ay, c);
@@ -480,9 +519,9 @@ int medial_circle_decided(const Site_nt<NT> s[3], const Triple_relations& rel, C
     int ip = s[0].is_point ? 0 : (s[1].is_point ? 1 : 2);
     int i1 = (ip + 1) % 3, i2 = (ip + 2) % 3;
     if(rel.point_is_target[ip][i1] || rel.point_is_source[ip][i2])
-      return false;
+      return 0;
     if(rel.point_is_source[ip][i1] && rel.point_is_target[ip][i2])
-      return false;
+      return 0;
     if(rel.point_is_source[ip][i1]) {
       Line_nt<NT> l1 = oriented_line(s[i1]), l2 = oriented_line(s[i2]);
       return tangent_at_point_and_line(s[ip].ax, s[ip].ay, l1, l2, c);
@@ -492,7 +531,7 @@ int medial_circle_decided(const Site_nt<NT> s[3], const Triple_relations& rel, C
       return tangent_at_point_and_line(s[ip].ax, s[ip].ay, l2, l1, c);
     }
     if(rel.flat_join[i2][i1])
-      return false;
+      return 0;
     if(rel.flat_join[i1][i2]) {
       Line_nt<NT> l = oriented_line(s[i1]);
       return tangent_at_point_and_point(s[i1].bx, s[i1].by, l, s[ip].ax, s[ip].ay, c);
@@ -503,7 +542,7 @@ int medial_circle_decided(const Site_nt<NT> s[3], const Triple_relations& rel, C
   for(int i = 0; i < 3; ++i) {
     int j = (i + 1) % 3, k = (i + 2) % 3;
     if(rel.flat_join[j][i])
-      return false;
+      return 0;
     if(rel.flat_join[i][j]) {
       Line_nt<NT> l = oriented_line(s[i]), m = oriented_line(s[k]);
       return tangent_at_point_and_line(s[i].bx, s[i].by, l, m, c);
@@ -517,10 +556,7 @@ int medial_circle_decided(const Site_nt<NT> s[3], const Triple_relations& rel, C
 template <class NT>
 bool medial_circle(const Site_nt<NT> s[3], const Triple_relations& rel, Circle_nt<NT>& c)
 {
-  const int found = medial_circle_decided(s, rel, c);
-  if(found < 0)
-    throw Uncertain_conversion_exception("medial_circle: undecided comparison");
-  return found == 1;
+  return certain_or_throw(medial_circle_decided(s, rel, c), "medial_circle: undecided comparison");
 }
 
 /// Whether the disk touches every segment site of the triple within the
