@@ -415,8 +415,10 @@ one_shot_medial_axis(const std::vector<std::vector<typename Traits::Kernel::Poin
 #ifdef CGAL_PMA2_USE_TBB
     // The validation (a sweep) and the Delaunay triangulation of the points
     // (which any finite points have) run at the same time; the constraints
-    // wait for a valid polygon.
-    if(std::is_floating_point<typename Kernel::FT>::value && tbb::this_task_arena::max_concurrency() > 1) {
+    // wait for a valid polygon.  (Small polygons stay on this thread.)
+    std::size_t vertices = 0;
+    for(const auto& ring : rings) vertices += ring.size();
+    if(parallel_one_shot<Traits>(vertices) && tbb::this_task_arena::max_concurrency() > 1) {
       overlap = true;
       for(const auto& ring : rings)
         for(const auto& p : ring)
@@ -492,7 +494,8 @@ are computed in parallel, on the threads of the current `tbb::task_arena`
 `tbb::task_arena(n).execute()` to use n), for traits over a kernel of
 doubles (`Epick`, `Simple_cartesian<double>`): the exact number types of
 `Epeck` and `CORE::Expr` share state between threads, and run sequentially.
-Without oneTBB it runs sequentially.  The result is the same in all cases.
+A polygon of fewer than 512 vertices is computed on the calling thread,
+without starting oneTBB.  Without oneTBB it runs sequentially.  The result is the same in all cases.
 
 If `statistics` is given, it receives the input size, the times of the
 phases and the counts of the merges and their events.

@@ -437,16 +437,27 @@ void bad_input()
     }
     return std::string();
   };
-  for(const auto& [name, rings] : invalid) {
-    const std::string expected = message([&] { CGAL::Progressive_medial_axes::validate_polygon(rings); });
-    std::string got;
+  // Each as it is (a small polygon is checked on the calling thread) and
+  // with 600 more vertices on the closing edge of its first ring (the check
+  // then runs beside the triangulation).
+  for(const auto& [name, small] : invalid)
+    for(bool large : {false, true}) {
+      auto rings = small;
+      if(large && rings[0].size() >= 3) {
+        const P a = rings[0].back(), b = rings[0].front();
+        for(int i = 1; i <= 600; ++i)
+          rings[0].push_back(P(a.x() + (b.x() - a.x()) * i / 601.0, a.y() + (b.y() - a.y()) * i / 601.0));
+      }
+      const std::string expected = message([&] { CGAL::Progressive_medial_axes::validate_polygon(rings); });
+      std::string got;
 #ifdef CGAL_LINKED_WITH_TBB
-    tbb::task_arena(2).execute([&] { got = message([&] { CGAL::medial_axis_2(rings); }); });
+      tbb::task_arena(2).execute([&] { got = message([&] { CGAL::medial_axis_2(rings); }); });
 #else
-    got = message([&] { CGAL::medial_axis_2(rings); });
+      got = message([&] { CGAL::medial_axis_2(rings); });
 #endif
-    CHECK(!expected.empty() && got == expected, "one-shot on invalid input (" << name << "): " << got);
-  }
+      CHECK(!expected.empty() && got == expected,
+            "one-shot on invalid input (" << name << (large ? ", 600 more vertices" : "") << "): " << got);
+    }
 }
 
 // Concurrency: 4 threads read one result, 4 threads build 4 results.

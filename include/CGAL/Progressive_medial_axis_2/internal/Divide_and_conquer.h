@@ -340,19 +340,38 @@ private:
   std::vector<char> added_;   // written by the part of each triangle only
 };
 
+/// Below this many triangles a one-shot runs on the calling thread and
+/// never calls oneTBB: initialising its scheduler and starting a worker (a
+/// process pays about 0.8 ms for it, and the second core meets the code
+/// cold) costs more than the parts save there.  A polygon of 268 vertices
+/// took 5.0 ms as a whole tool process on two threads and 4.0 ms without
+/// oneTBB; integer grids of 800 vertices are faster on two threads
+/// (RESULTS.md, "Start-up of small runs", third session).
+constexpr std::size_t min_parallel_triangles = 512;
+
+/// Whether a one-shot of `triangles` triangles runs its parts in parallel
+/// (where oneTBB is linked and the kernel allows it).
+template <class Traits>
+bool parallel_one_shot(std::size_t triangles)
+{
+  return std::is_floating_point<typename Traits::Kernel::FT>::value && triangles >= min_parallel_triangles;
+}
+
 /// The number of parts of a one-shot of `triangles` triangles: four per
 /// thread of the current task arena (so that the threads stay busy to the
-/// end), on one thread too, and parts of at least 32 triangles.  Balanced
-/// parts merged pairwise do less work than one part grown a triangle at a
-/// time where many generators are cocircular: on one thread, a regular
-/// 1000-gon took 279 ms in one part and 89 ms in four, a Koch snowflake of
-/// 384 vertices 19.7 ms and 13.4 ms, country outlines about 6% less, integer
-/// grids the same (RESULTS.md, 2026-11-26).
+/// end; one thread below `min_parallel_triangles`), on one thread too, and
+/// parts of at least 32 triangles.  Balanced parts merged pairwise do less
+/// work than one part grown a triangle at a time where many generators are
+/// cocircular: on one thread, a regular 1000-gon took 279 ms in one part and
+/// 89 ms in four, a Koch snowflake of 384 vertices 19.7 ms and 13.4 ms,
+/// country outlines about 6% less, integer grids the same (RESULTS.md,
+/// 2026-11-26).
 inline std::size_t default_parts(std::size_t triangles)
 {
   std::size_t threads = 1;
 #ifdef CGAL_PMA2_USE_TBB
-  threads = std::size_t((std::max)(1, tbb::this_task_arena::max_concurrency()));
+  if(triangles >= min_parallel_triangles)
+    threads = std::size_t((std::max)(1, tbb::this_task_arena::max_concurrency()));
 #endif
   return (std::max)(std::size_t(1), (std::min)(4 * threads, triangles / 32));
 }
@@ -362,15 +381,19 @@ inline std::size_t default_parts(std::size_t triangles)
 /// `parts` parts, or with 0 as many as default_parts() chooses.
 /// Parts run in parallel only on a kernel of doubles (Epick, or
 /// Simple_cartesian<double>): the number types of exact kernels (CORE::Expr,
-/// the lazy numbers of Epeck) share state between threads in CGAL 5.5.  The
-/// filter counters of the other threads are added to the caller's.
+/// the lazy numbers of Epeck) share state between threads in CGAL 5.5; and
+/// with the default number of parts, only from `min_parallel_triangles`
+/// triangles on (the tests ask for parts to run small polygons in
+/// parallel).  The filter counters of the other threads are added to the
+/// caller's.
 template <class Traits>
 Divide_and_conquer_counts divide_and_conquer(Medial_axis_engine<Traits>& engine, std::vector<Triangle> triangles,
                                              std::size_t parts = 0)
 {
-  const bool parallel = std::is_floating_point<typename Traits::Kernel::FT>::value;
+  const bool doubles = std::is_floating_point<typename Traits::Kernel::FT>::value;
+  const bool parallel = parts != 0 ? doubles : parallel_one_shot<Traits>(triangles.size());
   if(parts == 0)
-    parts = parallel ? default_parts(triangles.size()) : 1;
+    parts = doubles ? default_parts(triangles.size()) : 1;
   Divide_and_conquer<Traits> driver(engine, std::move(triangles));
   Thread_counters<Traits> counters;
   std::mutex mutex;
