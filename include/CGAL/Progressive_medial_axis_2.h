@@ -418,7 +418,8 @@ one_shot_medial_axis(const std::vector<std::vector<typename Traits::Kernel::Poin
     // wait for a valid polygon.  (Small polygons stay on this thread.)
     std::size_t vertices = 0;
     for(const auto& ring : rings) vertices += ring.size();
-    if(parallel_one_shot<Traits>(vertices) && tbb::this_task_arena::max_concurrency() > 1) {
+    if(std::is_floating_point<typename Kernel::FT>::value && (vertices >= min_overlap_vertices || tbb_running()) &&
+       tbb::this_task_arena::max_concurrency() > 1) {
       overlap = true;
       for(const auto& ring : rings)
         for(const auto& p : ring)
@@ -494,8 +495,10 @@ are computed in parallel, on the threads of the current `tbb::task_arena`
 `tbb::task_arena(n).execute()` to use n), for traits over a kernel of
 doubles (`Epick`, `Simple_cartesian<double>`): the exact number types of
 `Epeck` and `CORE::Expr` share state between threads, and run sequentially.
-A polygon of fewer than 512 vertices is computed on the calling thread,
-without starting oneTBB.  Without oneTBB it runs sequentially.  The result is the same in all cases.
+Called outside any task arena (where oneTBB does not run yet), it starts
+oneTBB only where the work pays for it: it builds the first part on the
+calling thread, and the others in parallel only if they would take more
+than about 4 ms on one thread.  Without oneTBB it runs sequentially.  The result is the same in all cases.
 
 If `statistics` is given, it receives the input size, the times of the
 phases and the counts of the merges and their events.

@@ -437,9 +437,9 @@ void bad_input()
     }
     return std::string();
   };
-  // Each as it is (a small polygon is checked on the calling thread) and
-  // with 600 more vertices on the closing edge of its first ring (the check
-  // then runs beside the triangulation).
+  // Each as it is and with 600 more vertices on the closing edge of its
+  // first ring (outside a task arena, only a polygon of 512 vertices or more
+  // is checked beside the triangulation).
   for(const auto& [name, small] : invalid)
     for(bool large : {false, true}) {
       auto rings = small;
@@ -449,18 +449,42 @@ void bad_input()
           rings[0].push_back(P(a.x() + (b.x() - a.x()) * i / 601.0, a.y() + (b.y() - a.y()) * i / 601.0));
       }
       const std::string expected = message([&] { CGAL::Progressive_medial_axes::validate_polygon(rings); });
-      std::string got;
+      // called outside any task arena, and in one of two threads
+      const std::string plain = message([&] { CGAL::medial_axis_2(rings); });
+      std::string in_arena = plain;
 #ifdef CGAL_LINKED_WITH_TBB
-      tbb::task_arena(2).execute([&] { got = message([&] { CGAL::medial_axis_2(rings); }); });
-#else
-      got = message([&] { CGAL::medial_axis_2(rings); });
+      tbb::task_arena(2).execute([&] { in_arena = message([&] { CGAL::medial_axis_2(rings); }); });
 #endif
-      CHECK(!expected.empty() && got == expected,
-            "one-shot on invalid input (" << name << (large ? ", 600 more vertices" : "") << "): " << got);
+      for(const std::string& got : {plain, in_arena})
+        CHECK(!expected.empty() && got == expected,
+              "one-shot on invalid input (" << name << (large ? ", 600 more vertices" : "") << "): " << got);
     }
 }
 
 // Concurrency: 4 threads read one result, 4 threads build 4 results.
+// Outside any task arena, a one-shot of a polygon too small to cut into
+// parts neither checks its input beside the triangulation nor starts
+// oneTBB; it gives the axis that two threads give.  (Run first: the first
+// use of oneTBB attaches the main thread to an arena for good.)
+void one_shot_without_tbb()
+{
+#ifdef CGAL_LINKED_WITH_TBB
+  using CGAL::Progressive_medial_axes::internal::tbb_running;
+  const auto rings = pma_test::random_polygon_with_holes(11, 12, 0);
+  CHECK(!tbb_running(), "oneTBB does not run before the first one-shot");
+  const auto alone = CGAL::medial_axis_2(rings);
+  CHECK(!tbb_running(), "a one-shot of " << rings[0].size() << " vertices does not start oneTBB");
+  std::size_t edges = 0, vertices = 0;
+  tbb::task_arena(2).execute([&] {
+    const auto ma = CGAL::medial_axis_2(rings);
+    edges = ma.number_of_edges();
+    vertices = ma.number_of_vertices();
+  });
+  CHECK(alone.number_of_edges() == edges && alone.number_of_vertices() == vertices && edges > 0,
+        "the one-shot without oneTBB has the size of the one on two threads");
+#endif
+}
+
 void threads()
 {
   const auto rings = pma_test::random_polygon_with_holes(5, 20, 12);
@@ -508,6 +532,7 @@ int main(int argc, char** argv)
     return pma_test::report("test_api --threads");
   }
   if(argc > 2) data_dir = argv[2];
+  one_shot_without_tbb();
   kernels();
   analysis();
   navigation();

@@ -419,10 +419,11 @@ int run(const Options& o)
   if(!std::is_floating_point<typename Traits::Kernel::FT>::value) threads = 1;
   tbb::task_arena arena(threads);
   // start the worker threads now, while this thread reads the input (not
-  // for a small file: a small polygon is computed without oneTBB, below)
+  // for a small file: see on_this_thread below)
   std::error_code size_error;
   const auto file_size = std::filesystem::file_size(o.input, size_error);
-  if(threads > 1 && (size_error || file_size >= 16384)) arena.enqueue([] {});
+  const bool small_file = !size_error && file_size < 16384;
+  if(threads > 1 && !small_file) arena.enqueue([] {});
 #endif
   // (time_read is the reading alone; time_total counts TBB's start too)
   const auto t_read = std::chrono::steady_clock::now();
@@ -455,9 +456,11 @@ int run(const Options& o)
   }
   double read_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t_read).count();
 
-  // A plain one-shot of one small polygon runs on this thread, and oneTBB
-  // is never started: the library computes it sequentially anyway (see
-  // min_parallel_triangles), and starting oneTBB costs more than the axis.
+  // A plain one-shot of one polygon from a small file, on the default
+  // number of threads, runs on this thread outside the arena: the library
+  // then starts oneTBB only if the polygon's parts are worth it (see
+  // internal::min_parallel_seconds), and on a small polygon starting it
+  // costs more than the axis.
   bool on_this_thread = false;
   auto in_arena = [&](const auto& f) {
 #ifdef CGAL_LINKED_WITH_TBB
@@ -524,11 +527,10 @@ int run(const Options& o)
   // every polygon is checked before any is computed: an invalid one stops
   // the run at once, or is repaired with --repair.
   const bool check_in_one_shot = !progressive && o.union_with.empty() && !o.repair;
-  if(!progressive && o.union_with.empty() && !o.repair && input.size() == 1) {
-    std::size_t vertices = 0;
-    for(const auto& r : input[0].rings) vertices += r.size();
-    on_this_thread = vertices < CGAL::Progressive_medial_axes::internal::min_parallel_triangles;
-  }
+#ifdef CGAL_LINKED_WITH_TBB
+  on_this_thread = !progressive && o.union_with.empty() && !o.repair && input.size() == 1 && small_file &&
+                   threads == tbb::info::default_concurrency();
+#endif
   std::vector<std::string> errors(input.size());
   std::vector<double> validation_seconds(input.size(), 0);
   if(!check_in_one_shot)

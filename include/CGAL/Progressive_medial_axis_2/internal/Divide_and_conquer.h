@@ -129,6 +129,37 @@ struct Divide_and_conquer_counts {
   void on_vanish() { ++vanishings; }
 };
 
+/// How the parts of a one-shot run: on the calling thread, in parallel
+/// (oneTBB), or in parallel only where it pays (see `min_parallel_seconds`).
+enum Parts_mode { PARTS_SEQUENTIAL, PARTS_PARALLEL, PARTS_PARALLEL_IF_WORTH_IT };
+
+/// A one-shot called where oneTBB does not run yet (outside any task arena)
+/// builds its parts on the calling thread, one after the other, until the
+/// parts left would take at least this long there (their triangles at the
+/// rate of the parts built); those it builds in parallel.  Starting oneTBB
+/// costs a process about 0.8 ms (its scheduler, its allocator, a worker
+/// thread) and a worker meets the code cold: on a polygon of 268 vertices,
+/// the whole tool took 5.0 ms on two threads and 4.0 ms without oneTBB; on
+/// integer grids of 800 vertices, and on polygons of a few hundred
+/// cocircular vertices, two threads are faster (RESULTS.md, "Start-up of
+/// small runs", third session).
+constexpr double min_parallel_seconds = 0.004;
+
+/// Below this many vertices, a one-shot called where oneTBB does not run
+/// yet checks the polygon before it triangulates it, on the calling thread,
+/// rather than beside it on another thread.
+constexpr std::size_t min_overlap_vertices = 512;
+
+/// Whether the calling thread is in a oneTBB task arena (oneTBB runs).
+inline bool tbb_running()
+{
+#ifdef CGAL_PMA2_USE_TBB
+  return tbb::this_task_arena::current_thread_index() != tbb::task_arena::not_initialized;
+#else
+  return false;
+#endif
+}
+
 template <class Traits>
 class Divide_and_conquer
 {
@@ -143,11 +174,11 @@ public:
   {}
 
   /// Computes the axis into the engine's structure, cutting the spanning
-  /// tree into about `parts` parts, built in parallel if `parallel`.  The task of each part is run as
-  /// `run_part(task)`, in the thread that builds it (the caller can gather
-  /// thread-local counters there).
+  /// tree into about `parts` parts, built as `mode` says.  The task of each
+  /// part is run as `run_part(task)`, in the thread that builds it (the
+  /// caller can gather thread-local counters there).
   template <class Run_part>
-  Divide_and_conquer_counts run(std::size_t parts, bool parallel, const Run_part& run_part)
+  Divide_and_conquer_counts run(std::size_t parts, Parts_mode mode, const Run_part& run_part)
   {
     const int T = int(triangles_.size());
     Divide_and_conquer_counts counts;
@@ -174,12 +205,28 @@ public:
       });
       part_seconds[p] = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     };
+    std::size_t first = 0;
+    bool parallel = mode != PARTS_SEQUENTIAL && P > 1;
 #ifdef CGAL_PMA2_USE_TBB
+    if(parallel && mode == PARTS_PARALLEL_IF_WORTH_IT && !tbb_running()) {
+      // the parts one after the other, until the ones left look worth
+      // starting oneTBB for: their triangles at the rate of the parts done
+      parallel = false;
+      double seconds = 0;
+      std::size_t done = 0;
+      while(first < P && !parallel) {
+        build(first);
+        seconds += part_seconds[first];
+        done += size_[first];
+        ++first;
+        parallel = first < P && seconds * double(triangles_.size() - done) >= min_parallel_seconds * double(done);
+      }
+    }
     if(parallel)
-      tbb::parallel_for(std::size_t(0), P, [&](std::size_t p) { build(p); }, tbb::simple_partitioner());
+      tbb::parallel_for(first, P, [&](std::size_t p) { build(p); }, tbb::simple_partitioner());
     else
 #endif
-      for(std::size_t p = 0; p < P; ++p) build(p);
+      for(std::size_t p = first; p < P; ++p) build(p);
     (void)parallel;
     for(const auto& c : part_counts) counts.add(c);
     counts.parts = P;
@@ -340,27 +387,9 @@ private:
   std::vector<char> added_;   // written by the part of each triangle only
 };
 
-/// Below this many triangles a one-shot runs on the calling thread and
-/// never calls oneTBB: initialising its scheduler and starting a worker (a
-/// process pays about 0.8 ms for it, and the second core meets the code
-/// cold) costs more than the parts save there.  A polygon of 268 vertices
-/// took 5.0 ms as a whole tool process on two threads and 4.0 ms without
-/// oneTBB; integer grids of 800 vertices are faster on two threads
-/// (RESULTS.md, "Start-up of small runs", third session).
-constexpr std::size_t min_parallel_triangles = 512;
-
-/// Whether a one-shot of `triangles` triangles runs its parts in parallel
-/// (where oneTBB is linked and the kernel allows it).
-template <class Traits>
-bool parallel_one_shot(std::size_t triangles)
-{
-  return std::is_floating_point<typename Traits::Kernel::FT>::value && triangles >= min_parallel_triangles;
-}
-
 /// The number of parts of a one-shot of `triangles` triangles: four per
 /// thread of the current task arena (so that the threads stay busy to the
-/// end; one thread below `min_parallel_triangles`), on one thread too, and
-/// parts of at least 32 triangles.  Balanced parts merged pairwise do less
+/// end), on one thread too, and parts of at least 32 triangles.  Balanced parts merged pairwise do less
 /// work than one part grown a triangle at a time where many generators are
 /// cocircular: on one thread, a regular 1000-gon took 279 ms in one part and
 /// 89 ms in four, a Koch snowflake of 384 vertices 19.7 ms and 13.4 ms,
@@ -370,8 +399,7 @@ inline std::size_t default_parts(std::size_t triangles)
 {
   std::size_t threads = 1;
 #ifdef CGAL_PMA2_USE_TBB
-  if(triangles >= min_parallel_triangles)
-    threads = std::size_t((std::max)(1, tbb::this_task_arena::max_concurrency()));
+  threads = std::size_t((std::max)(1, tbb::this_task_arena::max_concurrency()));
 #endif
   return (std::max)(std::size_t(1), (std::min)(4 * threads, triangles / 32));
 }
@@ -381,17 +409,18 @@ inline std::size_t default_parts(std::size_t triangles)
 /// `parts` parts, or with 0 as many as default_parts() chooses.
 /// Parts run in parallel only on a kernel of doubles (Epick, or
 /// Simple_cartesian<double>): the number types of exact kernels (CORE::Expr,
-/// the lazy numbers of Epeck) share state between threads in CGAL 5.5; and
-/// with the default number of parts, only from `min_parallel_triangles`
-/// triangles on (the tests ask for parts to run small polygons in
-/// parallel).  The filter counters of the other threads are added to the
-/// caller's.
+/// the lazy numbers of Epeck) share state between threads in CGAL 5.5.
+/// With the default number of parts, a call made where oneTBB does not run
+/// yet builds parts on the calling thread and starts oneTBB only when the
+/// parts left are worth it (see `min_parallel_seconds`); explicit parts
+/// (the tests) always run in parallel.  The filter counters of the
+/// other threads are added to the caller's.
 template <class Traits>
 Divide_and_conquer_counts divide_and_conquer(Medial_axis_engine<Traits>& engine, std::vector<Triangle> triangles,
                                              std::size_t parts = 0)
 {
   const bool doubles = std::is_floating_point<typename Traits::Kernel::FT>::value;
-  const bool parallel = parts != 0 ? doubles : parallel_one_shot<Traits>(triangles.size());
+  const Parts_mode mode = !doubles ? PARTS_SEQUENTIAL : (parts != 0 ? PARTS_PARALLEL : PARTS_PARALLEL_IF_WORTH_IT);
   if(parts == 0)
     parts = doubles ? default_parts(triangles.size()) : 1;
   Divide_and_conquer<Traits> driver(engine, std::move(triangles));
@@ -399,7 +428,7 @@ Divide_and_conquer_counts divide_and_conquer(Medial_axis_engine<Traits>& engine,
   std::mutex mutex;
   const std::thread::id caller = std::this_thread::get_id();
   const Divide_and_conquer_counts counts =
-    driver.run(parts, parallel, [&](const auto& task) { counters.run_counted(caller, mutex, task); });
+    driver.run(parts, mode, [&](const auto& task) { counters.run_counted(caller, mutex, task); });
   if constexpr(!std::is_empty<Thread_counters<Traits> >::value)
     counters.gather();
   return counts;
