@@ -496,9 +496,10 @@ are computed in parallel, on the threads of the current `tbb::task_arena`
 doubles (`Epick`, `Simple_cartesian<double>`): the exact number types of
 `Epeck` and `CORE::Expr` share state between threads, and run sequentially.
 Called outside any task arena (where oneTBB does not run yet), it starts
-oneTBB only where the work pays for it: it builds the first part on the
-calling thread, and the others in parallel only if they would take more
-than about 4 ms on one thread.  Without oneTBB it runs sequentially.  The result is the same in all cases.
+oneTBB only where the work pays for it: it builds the parts on the calling
+thread, one after the other, until the parts left would take about 4 ms
+or more there, and builds those in parallel.  Without oneTBB it runs
+sequentially.  The result is the same in all cases.
 
 If `statistics` is given, it receives the input size, the times of the
 phases and the counts of the merges and their events.

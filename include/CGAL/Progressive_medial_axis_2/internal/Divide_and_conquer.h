@@ -389,12 +389,12 @@ private:
 
 /// The number of parts of a one-shot of `triangles` triangles: four per
 /// thread of the current task arena (so that the threads stay busy to the
-/// end), on one thread too, and parts of at least 32 triangles.  Balanced parts merged pairwise do less
-/// work than one part grown a triangle at a time where many generators are
-/// cocircular: on one thread, a regular 1000-gon took 279 ms in one part and
-/// 89 ms in four, a Koch snowflake of 384 vertices 19.7 ms and 13.4 ms,
-/// country outlines about 6% less, integer grids the same (RESULTS.md,
-/// 2026-11-26).
+/// end), on one thread too, and parts of at least 32 triangles.  Balanced
+/// parts merged pairwise do less work than one part grown a triangle at a
+/// time where many generators are cocircular: on one thread, a regular
+/// 1000-gon took 279 ms in one part and 89 ms in four, a Koch snowflake of
+/// 384 vertices 19.7 ms and 13.4 ms, country outlines about 6% less, integer
+/// grids the same (RESULTS.md, 2026-11-26).
 inline std::size_t default_parts(std::size_t triangles)
 {
   std::size_t threads = 1;
