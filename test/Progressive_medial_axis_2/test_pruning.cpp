@@ -342,6 +342,14 @@ void test_invariants()
             what << ", et=" << f << "R: " << g.components << " components, " << g.cycles << " cycles, " << holes
                  << " holes");
       CHECK(holes == 0 || !p.curves().empty(), what << ": cycles pruned away");
+      // without holes the centerline is the longest path between two ends
+      if(holes == 0 && !p.curves().empty()) {
+        const auto c = CGAL::medial_axis_centerline_2(p, false);
+        const double longest = pma_test::longest_path(p);
+        CHECK(c.paths().size() == 1 && std::fabs(c.length() - longest) <= 1e-9 * (1 + longest),
+              what << ", et=" << f << "R: centerline of " << c.paths().size() << " paths, length " << c.length()
+                   << ", the longest path is " << longest);
+      }
       for(const auto& c : p.curves())
         CHECK(c.begin >= 0 && c.end <= c.halfedge.length() && c.begin <= c.end, what << ": kept part out of its curve");
     }

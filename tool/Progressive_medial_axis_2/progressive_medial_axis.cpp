@@ -342,7 +342,7 @@ void analyse(const Options& o, Polygon_job<Traits>& job)
     job.significance.reset(new CGAL::Medial_axis_significance_2<Kernel>(*job.ma));
     double et = o.prune_et, ratio = o.prune_ratio;
     if(!o.prune) {   // the default pruning of a centerline: et = the largest radius
-      et = CGAL::to_double(CGAL::maximum_inscribed_circle_2(*job.ma).radius);
+      et = job.significance->largest_radius();
       ratio = 0;
     }
     job.pruned.reset(new CGAL::Pruned_medial_axis_2<Kernel>(CGAL::prune_medial_axis_2(*job.significance, et, ratio)));
@@ -908,8 +908,14 @@ int main(int argc, char** argv)
   // kernel flush the other CPU's TLB: a few milliseconds of a run on a small
   // polygon (RESULTS.md, "Start-up of small runs").  Grow in 16 MB steps and
   // give memory back only above 256 MB; the pages never touched cost nothing.
+  // Setting these also fixes the size above which glibc maps each block
+  // afresh (it would otherwise rise as large blocks are freed): raise it to
+  // 32 MB, so that the arrays of the analysis after the axis reuse the pages
+  // the axis left instead of faulting in new ones (RESULTS.md, "Significance,
+  // pruning and centerline, fourth session").
   mallopt(M_TOP_PAD, 16 << 20);
   mallopt(M_TRIM_THRESHOLD, 256 << 20);
+  mallopt(M_MMAP_THRESHOLD, 32 << 20);
 #endif
   Options o = parse(argc, argv);
   int status = 1;

@@ -249,8 +249,13 @@ std::pair<double, double> shoot_ray(const Medial_axis& ma, const std::pair<doubl
 \ingroup PkgProgressiveMedialAxis2Ref
 
 The centerline of a pruned medial axis (see `Medial_axis_centerline_2`),
-extended to the boundary with `extend`.  Linear in the size of the pruned
-axis (two shortest-path searches on it), plus O(n) per extended end.
+extended to the boundary with `extend`.  The two ends farthest apart come
+from two shortest-path searches on the graph of the junctions and ends of
+the pruned axis (each chain of curves between them is one link there; an
+axis without ends, such as that of a plate with holes, needs no search).
+The paths are then found depth first from the first end, so that the first
+path starts there.  O(m + k log k) for m kept curves and k junctions and
+ends, plus O(n) per extended end.
 */
 template <class K>
 Medial_axis_centerline_2<K> medial_axis_centerline_2(const Pruned_medial_axis_2<K>& pruned, bool extend = false)
@@ -266,7 +271,13 @@ Medial_axis_centerline_2<K> medial_axis_centerline_2(const Pruned_medial_axis_2<
   // the graph: a node per kept vertex and per cut end
   std::vector<int> vertex_node(pruned.medial_axis().vertex_id_bound(), -1);
   int n_nodes = 0;
-  struct Link { int a, b; double length; };
+  // a link per kept curve, with what the paths need of it (the curves are
+  // then read once, in order)
+  struct Link {
+    int a, b;
+    double length;
+    Piece piece;   // from a to b
+  };
   std::vector<Link> links;
   links.reserve(curves.size());
   auto node_of_vertex = [&](const typename Medial_axis_2<K>::Vertex_handle& v) {
@@ -277,7 +288,11 @@ Medial_axis_centerline_2<K> medial_axis_centerline_2(const Pruned_medial_axis_2<
   for(const Curve& c : curves) {
     const int a = c.cut_at_begin() ? n_nodes++ : node_of_vertex(c.source);
     const int b = c.cut_at_end() ? n_nodes++ : node_of_vertex(c.target);
-    links.push_back(Link{a, b, c.length()});
+    Piece p;
+    p.halfedge = c.halfedge;
+    p.from = c.begin;
+    p.to = c.end;
+    links.push_back(Link{a, b, c.length(), p});
   }
   // the curves at each node, in one array
   std::vector<int> first(std::size_t(n_nodes) + 1, 0), at(2 * links.size());
@@ -311,48 +326,82 @@ Medial_axis_centerline_2<K> medial_axis_centerline_2(const Pruned_medial_axis_2<
   };
   auto other = [&](int link, int node) { return links[link].a == node ? links[link].b : links[link].a; };
 
-  // farthest node from a source, along the curves (Dijkstra)
-  auto farthest = [&](int source, std::vector<int>* via) {
-    std::vector<double> dist(n_nodes, std::numeric_limits<double>::infinity());
-    if(via) via->assign(n_nodes, -1);
-    typedef std::pair<double, int> Item;
-    std::priority_queue<Item, std::vector<Item>, std::greater<Item> > q;
-    dist[source] = 0;
-    q.push(Item(0, source));
-    while(!q.empty()) {
-      const Item it = q.top();
-      q.pop();
-      if(it.first > dist[it.second]) continue;
-      for(int k = first[std::size_t(it.second)]; k < first[std::size_t(it.second) + 1]; ++k) {
-        const int o = near[std::size_t(k)].node;
-        const double d = it.first + near[std::size_t(k)].length;
-        if(d < dist[o]) {
-          dist[o] = d;
-          if(via) (*via)[o] = at[std::size_t(k)];
-          q.push(Item(d, o));
+  // from an end (if there is none, the centerline is the cycles of node 0)
+  int start = -1;
+  for(int v = 0; v < n_nodes && start < 0; ++v)
+    if(incident(v).size() == 1) start = v;
+  int end_a = 0, end_b = 0;
+  if(start >= 0) {
+    // The two searches run on the graph of the junctions and ends only: each
+    // chain of nodes of degree 2 between them (most nodes, for example the
+    // curves around a hole) is one link there, of the chain's total length.
+    std::vector<int> key_of(std::size_t(n_nodes), -1), keys;
+    for(int v = 0; v < n_nodes; ++v)
+      if(incident(v).size() != 2) {
+        key_of[std::size_t(v)] = int(keys.size());
+        keys.push_back(v);
+      }
+    std::vector<int> key_first(keys.size() + 1, 0);
+    for(std::size_t i = 0; i < keys.size(); ++i)
+      key_first[i + 1] = key_first[i] + int(incident(keys[i]).size());
+    std::vector<Near> key_near(std::size_t(key_first.back()));
+    for(std::size_t i = 0; i < keys.size(); ++i) {
+      const int v = keys[i];
+      for(int k = first[std::size_t(v)]; k < first[std::size_t(v) + 1]; ++k) {
+        // follow the chain to the next junction or end (a chain entered from
+        // a junction cannot close on itself without one)
+        int l = at[std::size_t(k)], node = near[std::size_t(k)].node;
+        double length = near[std::size_t(k)].length;
+        while(key_of[std::size_t(node)] < 0) {
+          const int f = first[std::size_t(node)];
+          const int next = at[std::size_t(f)] == l ? f + 1 : f;
+          l = at[std::size_t(next)];
+          length += near[std::size_t(next)].length;
+          node = near[std::size_t(next)].node;
         }
+        key_near[std::size_t(key_first[i] + (k - first[std::size_t(v)]))] = Near{key_of[std::size_t(node)], length};
       }
     }
-    int best = source;
-    for(int v = 0; v < n_nodes; ++v)
-      if(incident(v).size() == 1 && dist[v] != std::numeric_limits<double>::infinity() &&
-         (incident(best).size() != 1 || dist[v] > dist[best]))
-        best = v;
-    return best;
-  };
-  int start = 0;
-  for(int v = 0; v < n_nodes; ++v)
-    if(incident(v).size() == 1) {
-      start = v;
-      break;
-    }
-  const int end_a = farthest(start, nullptr);
-  const int end_b = farthest(end_a, nullptr);
+    // the end farthest from an end, along the curves (Dijkstra); on a tie the
+    // first in the order of the nodes
+    auto farthest = [&](int source) {
+      std::vector<double> dist(keys.size(), std::numeric_limits<double>::infinity());
+      typedef std::pair<double, int> Item;
+      std::priority_queue<Item, std::vector<Item>, std::greater<Item> > q;
+      dist[std::size_t(key_of[std::size_t(source)])] = 0;
+      q.push(Item(0, key_of[std::size_t(source)]));
+      while(!q.empty()) {
+        const Item it = q.top();
+        q.pop();
+        if(it.first > dist[std::size_t(it.second)]) continue;
+        for(int k = key_first[std::size_t(it.second)]; k < key_first[std::size_t(it.second) + 1]; ++k) {
+          const int o = key_near[std::size_t(k)].node;
+          const double d = it.first + key_near[std::size_t(k)].length;
+          if(d < dist[std::size_t(o)]) {
+            dist[std::size_t(o)] = d;
+            q.push(Item(d, o));
+          }
+        }
+      }
+      int best = source;
+      double best_dist = 0;
+      for(std::size_t i = 0; i < keys.size(); ++i)
+        if(incident(keys[i]).size() == 1 && dist[i] > best_dist && dist[i] != std::numeric_limits<double>::infinity()) {
+          best = keys[i];
+          best_dist = dist[i];
+        }
+      return best;
+    };
+    end_a = farthest(start);
+    end_b = farthest(end_a);
+  }
   const bool a_is_end = incident(end_a).size() == 1, b_is_end = incident(end_b).size() == 1;
 
   // peel the side branches: remove the ends other than end_a and end_b
   std::vector<int> degree(n_nodes);
-  std::vector<char> removed_link(links.size(), 0), removed_node(n_nodes, 0);
+  // the state of each link: 0, REMOVED (a side branch), or USED (in a path)
+  enum { REMOVED = 1, USED = 2 };
+  std::vector<char> link_state(links.size(), 0), removed_node(n_nodes, 0);
   std::deque<int> leaves;
   for(int v = 0; v < n_nodes; ++v) {
     degree[v] = int(incident(v).size());
@@ -364,73 +413,86 @@ Medial_axis_centerline_2<K> medial_axis_centerline_2(const Pruned_medial_axis_2<
     if(removed_node[v] || degree[v] != 1) continue;
     removed_node[v] = 1;
     for(int l : incident(v)) {
-      if(removed_link[l]) continue;
-      removed_link[l] = 1;
+      if(link_state[l] == REMOVED) continue;
+      link_state[l] = REMOVED;
       const int o = other(l, v);
       if(--degree[o] == 1 && o != end_a && o != end_b) leaves.push_back(o);
     }
   }
-  // nodes of the component of end_a only
-  std::vector<char> reached(n_nodes, 0);
-  {
-    std::vector<int> stack(1, end_a);
-    reached[end_a] = 1;
-    while(!stack.empty()) {
-      const int v = stack.back();
-      stack.pop_back();
-      for(int l : incident(v))
-        if(!removed_link[l] && !reached[other(l, v)]) {
-          reached[other(l, v)] = 1;
-          stack.push_back(other(l, v));
-        }
-    }
-  }
-
-  // maximal chains between nodes of degree other than 2
-  std::vector<char> used(links.size(), 0);
+  // The paths: the maximal chains between nodes of degree other than 2, of
+  // the component of end_a only, found depth first from end_a (so that a
+  // single path runs from one end to the other).  A path is built in a
+  // buffer and copied once, at its size.
+  std::vector<char> visited(std::size_t(n_nodes), 0);
+  std::vector<Piece> buffer;
   auto piece_of = [&](int l, int from_node) {
-    const Curve& c = curves[l];
-    Piece p;
-    p.halfedge = c.halfedge;
-    if(links[l].a == from_node) {
-      p.from = c.begin;
-      p.to = c.end;
-    } else {
-      p.from = c.end;
-      p.to = c.begin;
-    }
+    const Link& x = links[std::size_t(l)];
+    Piece p = x.piece;
+    if(x.a != from_node) std::swap(p.from, p.to);
     return p;
   };
-  auto walk = [&](int v, int l) {
+  // the path from node v along its incidence k; returns the node it ends at
+  auto walk = [&](int v, int k) {
     Path path;
+    buffer.clear();
     while(true) {
-      used[l] = 1;
-      path.pieces.push_back(piece_of(l, v));
-      v = other(l, v);
-      if(degree[v] != 2) break;
-      int next = -1;
-      for(int m : incident(v))
-        if(!removed_link[m] && !used[m]) next = m;
-      if(next < 0) {
+      const int l = at[std::size_t(k)];
+      link_state[std::size_t(l)] = USED;
+      buffer.push_back(piece_of(l, v));
+      v = near[std::size_t(k)].node;
+      if(degree[std::size_t(v)] != 2) break;
+      k = -1;
+      for(int j = first[std::size_t(v)]; j < first[std::size_t(v) + 1]; ++j)
+        if(link_state[std::size_t(at[std::size_t(j)])] == 0) k = j;
+      if(k < 0) {
         path.closed = true;
         break;
       }
-      l = next;
     }
-    return path;
+    path.pieces.assign(buffer.begin(), buffer.end());
+    out.paths_.push_back(std::move(path));
+    return v;
   };
-  // start at end_a so that a single path runs from one end to the other
-  std::vector<int> starts;
-  if(degree[end_a] != 2) starts.push_back(end_a);
-  for(int v = 0; v < n_nodes; ++v)
-    if(reached[v] && degree[v] != 2 && v != end_a) starts.push_back(v);
-  for(int v : starts)
-    for(int l : incident(v))
-      if(!removed_link[l] && !used[l]) out.paths_.push_back(walk(v, l));
-  for(int v = 0; v < n_nodes; ++v)   // cycles without a junction
-    if(reached[v])
-      for(int l : incident(v))
-        if(!removed_link[l] && !used[l]) out.paths_.push_back(walk(v, l));
+  auto unused = [&](int k) {
+    const int l = at[std::size_t(k)];
+    return link_state[std::size_t(l)] == 0;
+  };
+  // a junction or end of the component of end_a, if it has one (end_a can
+  // be a node of degree 2 when the axis has no end)
+  int root = end_a;
+  if(degree[std::size_t(end_a)] == 2) {
+    int k = first[std::size_t(end_a)];
+    while(link_state[std::size_t(at[std::size_t(k)])] == REMOVED) ++k;
+    int v = end_a, l = at[std::size_t(k)];
+    while(true) {
+      v = near[std::size_t(k)].node;
+      if(degree[std::size_t(v)] != 2 || v == end_a) break;
+      for(int j = first[std::size_t(v)]; j < first[std::size_t(v) + 1]; ++j)
+        if(at[std::size_t(j)] != l && link_state[std::size_t(at[std::size_t(j)])] != REMOVED) k = j;
+      l = at[std::size_t(k)];
+    }
+    root = v;
+  }
+  if(degree[std::size_t(root)] == 2) {   // a cycle without a junction
+    int k = first[std::size_t(root)];
+    while(!unused(k)) ++k;
+    walk(root, k);
+  } else {
+    std::vector<int> stack(1, root);
+    visited[std::size_t(root)] = 1;
+    while(!stack.empty()) {
+      const int v = stack.back();
+      stack.pop_back();
+      for(int k = first[std::size_t(v)]; k < first[std::size_t(v) + 1]; ++k)
+        if(unused(k)) {
+          const int t = walk(v, k);
+          if(!visited[std::size_t(t)]) {
+            visited[std::size_t(t)] = 1;
+            stack.push_back(t);
+          }
+        }
+    }
+  }
 
   if(extend) {
     const auto& ma = pruned.medial_axis();

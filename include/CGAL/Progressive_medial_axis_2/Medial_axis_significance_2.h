@@ -18,12 +18,17 @@
 
 #include <CGAL/assertions.h>
 
+#include <boost/container/vector.hpp>
+
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <cstddef>
 #include <functional>
 #include <limits>
+#include <memory>
 #include <stdexcept>
 #include <utility>
 #include <vector>
@@ -106,7 +111,11 @@ public:
 
   /// Computes the extended distance function of `ma` (a copy of the handle
   /// to the axis is kept).
-  explicit Medial_axis_significance_2(const Medial_axis& ma) : ma_(ma) { burn(build()); }
+  explicit Medial_axis_significance_2(const Medial_axis& ma) : ma_(ma)
+  {
+    build();
+    burn();
+  }
 
   const Medial_axis& medial_axis() const { return ma_; }
 
@@ -153,30 +162,39 @@ public:
   /// The latest finite time at which a point of the axis burns.
   double last_burning_time() const { return last_time_; }
 
+  /// The largest radius at a vertex of a medial curve, in double: the
+  /// radius of `maximum_inscribed_circle_2()` rounded to double, without
+  /// another pass over the axis (0 for an axis without curves).
+  double largest_radius() const { return largest_radius_; }
+
   /// \cond
   // The graph of the axis, for pruning and centerlines: vertices and curves
   // by index.
+  // (plain records, in vectors that do not initialise them: build() writes
+  // every field once, the nodes in parallel)
   struct Node {
-    double radius = 0;
-    double time = std::numeric_limits<double>::infinity();
-    int vertex = -1;             // its id number in the axis
-    int first = 0, degree = 0;   // incident curves: incidence_[first, first + degree)
-    int out = -1;                // the curve the fire goes on into
-    int far = -1;                // the node at its other end
-    double out_length = 0;       // its length
-    bool meets = false;          // whether a front from its other end meets this one inside it
-    bool ignited = false;
+    double radius;
+    double time;         // infinite until it catches fire
+    int vertex;          // its id number in the axis
+    int first, degree;   // incident curves: incidence_[first, first + degree)
+    int out;             // the curve the fire goes on into (-1 if none)
+    int far;             // the node at its other end (-1 if none)
+    double out_length;   // its length
+    bool meets;          // whether a front from its other end meets this one inside it
+    bool ignited;
   };
   struct Arc {
-    int halfedge = -1;  // the id number of the half-edge, oriented from node u to node w
-    int u = -1, w = -1;
-    double length = 0;
+    int halfedge;  // the id number of the half-edge, oriented from node u to node w
+    int u, w;
+    double length;
     // the time a front enters the curve from u (start[0]) and from w
     // (start[1]), infinite if none
-    double start[2] = {std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity()};
+    double start[2];
   };
-  const std::vector<Node>& nodes() const { return vertices_; }
-  const std::vector<Arc>& arcs() const { return arcs_; }
+  typedef boost::container::vector<Node> Node_vector;
+  typedef boost::container::vector<Arc> Arc_vector;
+  const Node_vector& nodes() const { return vertices_; }
+  const Arc_vector& arcs() const { return arcs_; }
   // the nodes that catch fire, in an order in which every node comes before
   // the node its front runs to (the other end of its curve `out`, unless
   // the fronts meet inside that curve)
@@ -207,15 +225,8 @@ public:
   /// \endcond
 
 private:
-  // The other end of each incidence and the length of its curve, next to
-  // incidence_ (what the passes of burn() read).
-  struct Near {
-    int node;
-    double length;
-  };
-
   // The graph from the arrays of the axis (Medial_axis_2::medial_curve_graph()).
-  std::vector<Near> build()
+  void build()
   {
     std::vector<int> curves;
     std::vector<std::array<int, 2> > ends;
@@ -224,26 +235,24 @@ private:
     ma_.medial_curve_graph(curves, ends, lengths, &radii);
     const std::size_t m = curves.size();
     vertex_map_.assign(ma_.vertex_id_bound(), -1);
-    arcs_.resize(m);
+    arcs_.resize(m, boost::container::default_init);
     // nodes in the order in which the curves reach them; the degrees and
     // the incidences are counted in small arrays of their own, not in the
-    // nodes' records
-    std::vector<int> node_vertex, count;
-    std::vector<double> node_radius;
-    node_vertex.reserve(m + 1);
-    node_radius.reserve(m + 1);
-    count.reserve(m + 2);
-    count.push_back(0);
+    // nodes' records.  Without branches: whether a curve reaches a node first
+    // follows no pattern a branch predictor could learn.
+    std::vector<int> node_vertex(2 * m + 1), count(2 * m + 2, 0);
+    std::vector<double> node_radius(2 * m + 1);
+    int n_nodes = 0;
     auto node = [&](int v, double radius) {
-      int& i = vertex_map_[std::size_t(v)];
-      if(i < 0) {
-        i = int(node_vertex.size());
-        node_vertex.push_back(v);
-        node_radius.push_back(radius);
-        count.push_back(0);
-      }
-      ++count[std::size_t(i) + 1];
-      return i;
+      const int i = vertex_map_[std::size_t(v)];
+      const int j = i < 0 ? n_nodes : i;
+      vertex_map_[std::size_t(v)] = j;
+      node_vertex[std::size_t(n_nodes)] = v;   // kept if the node is new
+      node_radius[std::size_t(n_nodes)] = radius;
+      n_nodes += int(i < 0);
+      largest_radius_ = (std::max)(largest_radius_, radius);
+      ++count[std::size_t(j) + 1];
+      return j;
     };
     for(std::size_t k = 0; k < m; ++k) {
       Arc& a = arcs_[k];
@@ -251,71 +260,103 @@ private:
       a.u = node(ends[k][0], radii[k][0]);
       a.w = node(ends[k][1], radii[k][1]);
       a.length = lengths[k];
+      a.start[0] = a.start[1] = infinity();
     }
-    const std::size_t n = node_vertex.size();
+    const std::size_t n = std::size_t(n_nodes);
     for(std::size_t v = 0; v < n; ++v) count[v + 1] += count[v];   // the first incidence of each node
-    vertices_.resize(n);
+    vertices_.resize(n, boost::container::default_init);
     Progressive_medial_axes::internal::parallel_blocks(n, [&](std::size_t b, std::size_t e) {
       for(std::size_t i = b; i < e; ++i) {
         Node& x = vertices_[i];
+        x.radius = node_radius[i];
+        x.time = infinity();
         x.vertex = node_vertex[i];
         x.first = count[i];
         x.degree = count[i + 1] - count[i];
-        x.radius = node_radius[i];
+        x.out = x.far = -1;
+        x.out_length = 0;
+        x.meets = x.ignited = false;
       }
     });
     incidence_.resize(std::size_t(count[n]));
-    std::vector<Near> near(std::size_t(count[n]));
     for(int i = 0; i < int(m); ++i) {
       const Arc& a = arcs_[std::size_t(i)];
-      const int ku = count[std::size_t(a.u)]++;
-      near[std::size_t(ku)] = Near{a.w, a.length};
-      incidence_[std::size_t(ku)] = i;
-      const int kw = count[std::size_t(a.w)]++;
-      near[std::size_t(kw)] = Near{a.u, a.length};
-      incidence_[std::size_t(kw)] = i;
+      incidence_[std::size_t(count[std::size_t(a.u)]++)] = i;
+      incidence_[std::size_t(count[std::size_t(a.w)]++)] = i;
     }
-    return near;
   }
 
   // The two passes of the class documentation.  Peeling follows a chain from
   // each end up the tree as long as the next node is ready, then the scan
   // takes the next end by index: the nodes visited in a row are then
   // neighbours on the axis rather than ends spread over the whole shape.
-  void burn(const std::vector<Near>& near)
+  // A node keeps the exclusive or of the indices of its curves not yet
+  // peeled, of the nodes at their other ends and of the bits of their
+  // lengths: when one curve is left, these are its curve to the parent, the
+  // parent and the length, found without reading the curve or the
+  // neighbours (one dependent read per step of a chain instead of two).
+  void burn()
   {
     const double inf = infinity(), none = -inf;
     const std::size_t n = vertices_.size();
+    // what the passes read of a node, in one record (48 bytes), set up in
+    // parallel (fresh memory: its first touch costs)
     struct State {
-      double top1, top2;    // the two latest arrivals from the children
-      double down;          // the arrival from the parent's side
-      int top1_child = -1;  // the child of top1
-      int parent_k = -1;    // the incidence towards the parent
-      int left = 0;         // curves not yet peeled; then, fronts still to arrive
+      double top1, top2;     // the two latest arrivals from the children
+      double down;           // the arrival from the parent's side
+      std::uint64_t length;  // until peeled, the exclusive or of the bits of the
+                             // lengths of the curves not yet peeled; then those of
+                             // the curve to the parent
+      int top1_child;        // the child of top1
+      int link;              // the same for the indices of the curves (-1 at a root)
+      int parent;            // the same for the nodes at their other ends
+      int left;              // curves not yet peeled, -1 once peeled; then, fronts
+                             // still to arrive
     };
-    std::vector<State> st(n);
-    std::vector<char> gone(n, 0);
+    auto bits = [](double x) {
+      std::uint64_t b;
+      std::memcpy(&b, &x, sizeof b);
+      return b;
+    };
+    auto parent_length = [](const State& x) {
+      double l;
+      std::memcpy(&l, &x.length, sizeof l);
+      return l;
+    };
+    std::unique_ptr<State[]> st(new State[n]);
+    Progressive_medial_axes::internal::parallel_blocks(n, [&](std::size_t b, std::size_t e) {
+      for(std::size_t v = b; v < e; ++v) {
+        State& x = st[v];
+        x.top1 = x.top2 = x.down = none;
+        x.top1_child = -1;
+        x.left = vertices_[v].degree;   // a loop (u == w) counts twice and is never peeled
+        x.link = x.parent = 0;
+        x.length = 0;
+        for(const int* k = arcs_begin(int(v)); k != arcs_end(int(v)); ++k) {
+          const Arc& a = arcs_[std::size_t(*k)];
+          x.link ^= *k;
+          x.parent ^= a.u ^ a.w ^ int(v);
+          x.length ^= bits(a.length);
+        }
+      }
+    });
     std::vector<int> peel;
     peel.reserve(n);
-    for(std::size_t v = 0; v < n; ++v) {
-      st[v].top1 = st[v].top2 = st[v].down = none;
-      st[v].left = vertices_[v].degree;   // a loop (u == w) counts twice and is never peeled
-    }
     // pass 1: peeling, from each end up as long as the next node is ready
+    // (the records of the ends further on are fetched ahead: the curve of an
+    // end, then the node at its other end)
+    using Progressive_medial_axes::internal::prefetch;
     for(std::size_t v0 = 0; v0 < n; ++v0) {
-      if(vertices_[v0].degree != 1 || gone[v0]) continue;
+      if(v0 + 8 < n && vertices_[v0 + 8].degree == 1) prefetch(&st[std::size_t(st[v0 + 8].parent)]);
+      if(vertices_[v0].degree != 1 || st[v0].left < 0) continue;
       int v = int(v0);
       while(v >= 0) {
-        gone[std::size_t(v)] = 1;
         peel.push_back(v);
         State& x = st[std::size_t(v)];
-        const Node& nv = vertices_[std::size_t(v)];
         int next = -1;
-        for(int k = nv.first; k < nv.first + nv.degree; ++k) {
-          const int p = near[std::size_t(k)].node;
-          if(gone[std::size_t(p)]) continue;
-          x.parent_k = k;
-          const double up = (x.top1 == none ? 0.0 : x.top1) + near[std::size_t(k)].length;
+        if(x.left == 1) {   // else a root: every curve leads to a child
+          const int p = x.parent;
+          const double up = (x.top1 == none ? 0.0 : x.top1) + parent_length(x);
           State& y = st[std::size_t(p)];
           if(up > y.top1) {
             y.top2 = y.top1;
@@ -323,48 +364,59 @@ private:
             y.top1_child = v;
           } else if(up > y.top2)
             y.top2 = up;
+          y.link ^= x.link;
+          y.parent ^= v;
+          y.length ^= x.length;
           if(--y.left == 1) next = p;
-          break;
-        }
+        } else
+          x.link = x.parent = -1;
+        x.left = -1;
         v = next;
       }
     }
     // pass 2: from the parents down; below the 2-core the parent's side
-    // never sends a front
+    // never sends a front (the arrival from there is infinite)
     for(std::size_t i = peel.size(); i-- > 0;) {
-      const int v = peel[i];
-      State& x = st[std::size_t(v)];
-      const int k = x.parent_k;
-      if(k < 0) continue;   // a root
-      const int p = near[std::size_t(k)].node;
+      if(i >= 8) prefetch(&st[std::size_t(peel[i - 8])]);
+      State& x = st[std::size_t(peel[i])];
+      if(x.parent < 0) continue;   // a root
+      const State& y = st[std::size_t(x.parent)];
       double t;
-      if(!gone[std::size_t(p)]) t = inf;
+      if(y.left != -1) t = inf;
       else {
-        const State& y = st[std::size_t(p)];
-        t = (std::max)(y.down, y.top1_child == v ? y.top2 : y.top1);
-        if(t == none) t = 0;   // p is an end
+        t = (std::max)(y.down, y.top1_child == peel[i] ? y.top2 : y.top1);
+        if(t == none) t = 0;   // the parent is an end
       }
-      x.down = t + near[std::size_t(k)].length;
+      x.down = t + parent_length(x);
     }
     // ignition: the latest arrival but one, and the curve of the latest
-    std::vector<int> to(n, -1);   // the node the front of a node runs to (compact, for the last pass)
+    std::vector<int> to(n, -1);   // the node the front of a node reaches, if it burns (compact, for the last pass)
     last_time_ = 0;
-    for(int v : peel) {
+    for(std::size_t i = 0; i < peel.size(); ++i) {
+      if(i + 8 < peel.size()) {
+        prefetch(&st[std::size_t(peel[i + 8])]);
+        prefetch(&vertices_[std::size_t(peel[i + 8])]);
+      }
+      if(i + 4 < peel.size() && st[std::size_t(peel[i + 4])].link >= 0)   // the curve its fire mostly runs into
+        prefetch(&arcs_[std::size_t(st[std::size_t(peel[i + 4])].link)]);
+      const int v = peel[i];
       Node& nv = vertices_[std::size_t(v)];
-      const State& x = st[std::size_t(v)];
+      State& x = st[std::size_t(v)];
       double t;
-      if(x.parent_k >= 0 && x.down >= x.top1) {
-        nv.out = incidence_[std::size_t(x.parent_k)];
-        nv.far = to[std::size_t(v)] = near[std::size_t(x.parent_k)].node;
-        nv.out_length = near[std::size_t(x.parent_k)].length;
+      if(x.parent >= 0 && x.down >= x.top1) {
+        nv.out = x.link;
+        nv.far = x.parent;
+        nv.out_length = parent_length(x);
+        if(x.down != inf) to[std::size_t(v)] = x.parent;
         t = x.top1;
       } else {
-        const int c = x.top1_child;
-        nv.out = incidence_[std::size_t(st[std::size_t(c)].parent_k)];
-        nv.far = to[std::size_t(v)] = c;
-        nv.out_length = near[std::size_t(st[std::size_t(c)].parent_k)].length;
+        const State& c = st[std::size_t(x.top1_child)];
+        nv.out = c.link;
+        nv.far = to[std::size_t(v)] = x.top1_child;
+        nv.out_length = parent_length(c);
         t = (std::max)(x.down, x.top2);
       }
+      x.left = 0;
       nv.time = t == none ? 0.0 : t;
       nv.ignited = true;
       last_time_ = (std::max)(last_time_, nv.time);
@@ -379,13 +431,10 @@ private:
     }
     // the order of fire: a node after every node whose front reaches it,
     // again along the tree as far as possible
-    auto target = [&](int v) {   // the node v's front reaches, or -1 (a node of the 2-core never burns)
-      const int w = to[std::size_t(v)];
-      return w >= 0 && gone[std::size_t(w)] ? w : -1;
-    };
-    for(int v : peel) st[std::size_t(v)].left = 0;
-    for(int v : peel) {
-      const int w = target(v);
+    for(std::size_t i = 0; i < peel.size(); ++i) {
+      if(i + 16 < peel.size()) prefetch(&to[std::size_t(peel[i + 16])]);
+      if(i + 8 < peel.size() && to[std::size_t(peel[i + 8])] >= 0) prefetch(&st[std::size_t(to[std::size_t(peel[i + 8])])]);
+      const int w = to[std::size_t(peel[i])];
       if(w >= 0) ++st[std::size_t(w)].left;
     }
     order_.clear();
@@ -396,7 +445,7 @@ private:
       while(v >= 0) {
         st[std::size_t(v)].left = -1;
         order_.push_back(v);
-        const int w = target(v);
+        const int w = to[std::size_t(v)];
         v = (w >= 0 && --st[std::size_t(w)].left == 0) ? w : -1;
       }
     }
@@ -404,12 +453,13 @@ private:
   }
 
   Medial_axis ma_;
-  std::vector<Node> vertices_;
-  std::vector<Arc> arcs_;
+  Node_vector vertices_;
+  Arc_vector arcs_;
   std::vector<int> incidence_;
   std::vector<int> order_;
   std::vector<int> vertex_map_;   // by id number
   double last_time_ = 0;
+  double largest_radius_ = 0;
 };
 
 /*!
@@ -500,8 +550,8 @@ Pruned_medial_axis_2<K> prune_medial_axis_2(const Medial_axis_significance_2<K>&
   typedef typename Sig::Arc Arc;
   typedef typename Pruned_medial_axis_2<K>::Curve Curve;
   const double inf = Sig::infinity();
-  const std::vector<Node>& nodes = sig.nodes();
-  const std::vector<Arc>& arcs = sig.arcs();
+  const auto& nodes = sig.nodes();
+  const auto& arcs = sig.arcs();
   Pruned_medial_axis_2<K> out(sig.medial_axis());
   // at most one kept part per curve (pages that are not written cost nothing)
   out.curves_.reserve(arcs.size());
