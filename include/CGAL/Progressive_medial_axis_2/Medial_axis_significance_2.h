@@ -61,11 +61,14 @@ on a tree depends only on the arrival times, so it is computed by two passes
 over the axis as a graph, as the eccentricities of a tree are.
 1. Leaves are peeled off (Kahn's order): a vertex goes when all its curves
    but one lead to vertices gone before it; that curve leads to its
-   *parent*.  What is never peeled is the 2-core of the axis, the cycles
-   around holes and the paths between them: it never burns.  A tree without
-   cycle ends at a *root*, peeled last with no parent.  In this order every
-   vertex gets `up(v)`, the latest arrival of the fronts of its children,
-   and the two latest arrivals with the curve of the first.
+   *parent* (found without reading the neighbours: a vertex keeps the
+   exclusive or of its curves not yet peeled, of their other ends and of
+   the bits of their lengths).  What is never peeled is the 2-core of the
+   axis, the cycles around holes and the paths between them: it never
+   burns.  A tree without cycle ends at a *root*, peeled last with no
+   parent.  In this order every vertex gets `up(v)`, the latest arrival of
+   the fronts of its children, and the two latest arrivals with the curve
+   of the first.
 2. In the reverse order every vertex gets `down(v)`, the time the front from
    its parent's side would arrive (infinite below the 2-core): the latest
    arrival at the parent from all its other curves, plus the curve's length.
