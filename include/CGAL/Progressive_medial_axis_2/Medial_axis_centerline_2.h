@@ -271,13 +271,7 @@ Medial_axis_centerline_2<K> medial_axis_centerline_2(const Pruned_medial_axis_2<
   // the graph: a node per kept vertex and per cut end
   std::vector<int> vertex_node(pruned.medial_axis().vertex_id_bound(), -1);
   int n_nodes = 0;
-  // a link per kept curve, with what the paths need of it (the curves are
-  // then read once, in order)
-  struct Link {
-    int a, b;
-    double length;
-    Piece piece;   // from a to b
-  };
+  struct Link { int a, b; double length; };
   std::vector<Link> links;
   links.reserve(curves.size());
   auto node_of_vertex = [&](const typename Medial_axis_2<K>::Vertex_handle& v) {
@@ -288,42 +282,44 @@ Medial_axis_centerline_2<K> medial_axis_centerline_2(const Pruned_medial_axis_2<
   for(const Curve& c : curves) {
     const int a = c.cut_at_begin() ? n_nodes++ : node_of_vertex(c.source);
     const int b = c.cut_at_end() ? n_nodes++ : node_of_vertex(c.target);
-    Piece p;
-    p.halfedge = c.halfedge;
-    p.from = c.begin;
-    p.to = c.end;
-    links.push_back(Link{a, b, c.length(), p});
+    links.push_back(Link{a, b, c.length()});
   }
   // the curves at each node, in one array
-  std::vector<int> first(std::size_t(n_nodes) + 1, 0), at(2 * links.size());
+  std::vector<int> first(std::size_t(n_nodes) + 1, 0);
   for(const Link& l : links) {
     ++first[std::size_t(l.a) + 1];
     ++first[std::size_t(l.b) + 1];
   }
   for(std::size_t v = 0; v < std::size_t(n_nodes); ++v) first[v + 1] += first[v];
-  // and next to them, the node at the other end and the length (for the
-  // searches, which then read nothing else)
-  struct Near { int node; double length; };
-  std::vector<Near> near(at.size());
+  // with the link, the node at the other end and the length (what the
+  // searches and the walks read)
+  struct Near { int node, link; double length; };
+  std::vector<Near> near(2 * links.size());
   {
     std::vector<int> fill(first.begin(), first.end() - 1);
     for(int i = 0; i < int(links.size()); ++i) {
       const int ka = fill[std::size_t(links[i].a)]++, kb = fill[std::size_t(links[i].b)]++;
-      at[std::size_t(ka)] = at[std::size_t(kb)] = i;
-      near[std::size_t(ka)] = Near{links[i].b, links[i].length};
-      near[std::size_t(kb)] = Near{links[i].a, links[i].length};
+      near[std::size_t(ka)] = Near{links[i].b, i, links[i].length};
+      near[std::size_t(kb)] = Near{links[i].a, i, links[i].length};
     }
   }
-  struct Curves_at {
-    const int *b, *e;
-    const int* begin() const { return b; }
-    const int* end() const { return e; }
+  struct Curves_at {   // the links at a node
+    const Near *b, *e;
+    struct iterator {
+      const Near* p;
+      int operator*() const { return p->link; }
+      iterator& operator++() { ++p; return *this; }
+      bool operator!=(const iterator& o) const { return p != o.p; }
+    };
+    iterator begin() const { return iterator{b}; }
+    iterator end() const { return iterator{e}; }
     std::size_t size() const { return std::size_t(e - b); }
-    int operator[](std::size_t i) const { return b[i]; }
+    int operator[](std::size_t i) const { return b[i].link; }
   };
   auto incident = [&](int v) {
-    return Curves_at{at.data() + first[std::size_t(v)], at.data() + first[std::size_t(v) + 1]};
+    return Curves_at{near.data() + first[std::size_t(v)], near.data() + first[std::size_t(v) + 1]};
   };
+  auto at = [&](int k) { return near[std::size_t(k)].link; };
   auto other = [&](int link, int node) { return links[link].a == node ? links[link].b : links[link].a; };
 
   // from an end (if there is none, the centerline is the cycles of node 0)
@@ -350,16 +346,16 @@ Medial_axis_centerline_2<K> medial_axis_centerline_2(const Pruned_medial_axis_2<
       for(int k = first[std::size_t(v)]; k < first[std::size_t(v) + 1]; ++k) {
         // follow the chain to the next junction or end (a chain entered from
         // a junction cannot close on itself without one)
-        int l = at[std::size_t(k)], node = near[std::size_t(k)].node;
+        int l = at(k), node = near[std::size_t(k)].node;
         double length = near[std::size_t(k)].length;
         while(key_of[std::size_t(node)] < 0) {
           const int f = first[std::size_t(node)];
-          const int next = at[std::size_t(f)] == l ? f + 1 : f;
-          l = at[std::size_t(next)];
+          const int next = at(f) == l ? f + 1 : f;
+          l = at(next);
           length += near[std::size_t(next)].length;
           node = near[std::size_t(next)].node;
         }
-        key_near[std::size_t(key_first[i] + (k - first[std::size_t(v)]))] = Near{key_of[std::size_t(node)], length};
+        key_near[std::size_t(key_first[i] + (k - first[std::size_t(v)]))] = Near{key_of[std::size_t(node)], -1, length};
       }
     }
     // the end farthest from an end, along the curves (Dijkstra); on a tie the
@@ -398,25 +394,29 @@ Medial_axis_centerline_2<K> medial_axis_centerline_2(const Pruned_medial_axis_2<
   const bool a_is_end = incident(end_a).size() == 1, b_is_end = incident(end_b).size() == 1;
 
   // peel the side branches: remove the ends other than end_a and end_b
-  std::vector<int> degree(n_nodes);
+  // (a node's incidences and degree left in one record: the walks below
+  // read them at every step)
+  struct Node_info { int first, end, degree; };
+  std::vector<Node_info> info(static_cast<std::size_t>(n_nodes));
   // the state of each link: 0, REMOVED (a side branch), or USED (in a path)
   enum { REMOVED = 1, USED = 2 };
   std::vector<char> link_state(links.size(), 0), removed_node(n_nodes, 0);
   std::deque<int> leaves;
   for(int v = 0; v < n_nodes; ++v) {
-    degree[v] = int(incident(v).size());
-    if(degree[v] == 1 && v != end_a && v != end_b) leaves.push_back(v);
+    info[std::size_t(v)] = Node_info{first[std::size_t(v)], first[std::size_t(v) + 1], int(incident(v).size())};
+    if(info[std::size_t(v)].degree == 1 && v != end_a && v != end_b) leaves.push_back(v);
   }
+  auto degree = [&](int v) { return info[std::size_t(v)].degree; };
   while(!leaves.empty()) {
     const int v = leaves.front();
     leaves.pop_front();
-    if(removed_node[v] || degree[v] != 1) continue;
+    if(removed_node[v] || degree(v) != 1) continue;
     removed_node[v] = 1;
     for(int l : incident(v)) {
       if(link_state[l] == REMOVED) continue;
       link_state[l] = REMOVED;
       const int o = other(l, v);
-      if(--degree[o] == 1 && o != end_a && o != end_b) leaves.push_back(o);
+      if(--info[std::size_t(o)].degree == 1 && o != end_a && o != end_b) leaves.push_back(o);
     }
   }
   // The paths: the maximal chains between nodes of degree other than 2, of
@@ -426,9 +426,12 @@ Medial_axis_centerline_2<K> medial_axis_centerline_2(const Pruned_medial_axis_2<
   std::vector<char> visited(std::size_t(n_nodes), 0);
   std::vector<Piece> buffer;
   auto piece_of = [&](int l, int from_node) {
-    const Link& x = links[std::size_t(l)];
-    Piece p = x.piece;
-    if(x.a != from_node) std::swap(p.from, p.to);
+    const Curve& c = curves[std::size_t(l)];
+    Piece p;
+    p.halfedge = c.halfedge;
+    p.from = c.begin;
+    p.to = c.end;
+    if(links[std::size_t(l)].a != from_node) std::swap(p.from, p.to);
     return p;
   };
   // the path from node v along its incidence k; returns the node it ends at
@@ -436,14 +439,15 @@ Medial_axis_centerline_2<K> medial_axis_centerline_2(const Pruned_medial_axis_2<
     Path path;
     buffer.clear();
     while(true) {
-      const int l = at[std::size_t(k)];
+      const int l = at(k);
       link_state[std::size_t(l)] = USED;
       buffer.push_back(piece_of(l, v));
       v = near[std::size_t(k)].node;
-      if(degree[std::size_t(v)] != 2) break;
+      const Node_info& x = info[std::size_t(v)];
+      if(x.degree != 2) break;
       k = -1;
-      for(int j = first[std::size_t(v)]; j < first[std::size_t(v) + 1]; ++j)
-        if(link_state[std::size_t(at[std::size_t(j)])] == 0) k = j;
+      for(int j = x.first; j < x.end; ++j)
+        if(link_state[std::size_t(at(j))] == 0) k = j;
       if(k < 0) {
         path.closed = true;
         break;
@@ -454,26 +458,26 @@ Medial_axis_centerline_2<K> medial_axis_centerline_2(const Pruned_medial_axis_2<
     return v;
   };
   auto unused = [&](int k) {
-    const int l = at[std::size_t(k)];
+    const int l = at(k);
     return link_state[std::size_t(l)] == 0;
   };
   // a junction or end of the component of end_a, if it has one (end_a can
   // be a node of degree 2 when the axis has no end)
   int root = end_a;
-  if(degree[std::size_t(end_a)] == 2) {
+  if(degree(end_a) == 2) {
     int k = first[std::size_t(end_a)];
-    while(link_state[std::size_t(at[std::size_t(k)])] == REMOVED) ++k;
-    int v = end_a, l = at[std::size_t(k)];
+    while(link_state[std::size_t(at(k))] == REMOVED) ++k;
+    int v = end_a, l = at(k);
     while(true) {
       v = near[std::size_t(k)].node;
-      if(degree[std::size_t(v)] != 2 || v == end_a) break;
+      if(degree(v) != 2 || v == end_a) break;
       for(int j = first[std::size_t(v)]; j < first[std::size_t(v) + 1]; ++j)
-        if(at[std::size_t(j)] != l && link_state[std::size_t(at[std::size_t(j)])] != REMOVED) k = j;
-      l = at[std::size_t(k)];
+        if(at(j) != l && link_state[std::size_t(at(j))] != REMOVED) k = j;
+      l = at(k);
     }
     root = v;
   }
-  if(degree[std::size_t(root)] == 2) {   // a cycle without a junction
+  if(degree(root) == 2) {   // a cycle without a junction
     int k = first[std::size_t(root)];
     while(!unused(k)) ++k;
     walk(root, k);
