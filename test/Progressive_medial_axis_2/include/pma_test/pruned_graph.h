@@ -20,39 +20,46 @@ struct Pruned_graph {
   int ends = 0, components = 0, cycles = 0;
 };
 
+// The nodes at the ends of each kept curve, numbered from 0: a kept vertex
+// is one node (by its id number), every cut end a node of its own.
+template <class K>
+std::vector<std::pair<int, int> > pruned_ends(const CGAL::Pruned_medial_axis_2<K>& p, int& nodes)
+{
+  std::map<std::size_t, int> vertex_node;
+  nodes = 0;
+  auto node = [&](const typename CGAL::Medial_axis_2<K>::Vertex_handle& v) {
+    const auto it = vertex_node.emplace(v.id_number(), nodes);
+    if(it.second) ++nodes;
+    return it.first->second;
+  };
+  std::vector<std::pair<int, int> > ends;
+  for(const auto& c : p.curves()) {
+    const int a = c.cut_at_begin() ? nodes++ : node(c.halfedge.source());
+    const int b = c.cut_at_end() ? nodes++ : node(c.halfedge.target());
+    ends.emplace_back(a, b);
+  }
+  return ends;
+}
+
 template <class K>
 Pruned_graph pruned_graph(const CGAL::Pruned_medial_axis_2<K>& p)
 {
-  std::map<std::size_t, int> vertex_node;
-  std::vector<int> parent, degree;
-  auto add = [&]() {
-    parent.push_back(int(parent.size()));
-    degree.push_back(0);
-    return int(parent.size()) - 1;
-  };
-  auto node = [&](const typename CGAL::Medial_axis_2<K>::Vertex_handle& v) {
-    auto it = vertex_node.find(v.id_number());
-    if(it != vertex_node.end()) return it->second;
-    const int n = add();
-    vertex_node[v.id_number()] = n;
-    return n;
-  };
+  int n = 0;
+  const std::vector<std::pair<int, int> > ends = pruned_ends(p, n);
+  std::vector<int> parent(static_cast<std::size_t>(n)), degree(static_cast<std::size_t>(n), 0);
+  for(int v = 0; v < n; ++v) parent[v] = v;
   std::function<int(int)> find = [&](int x) { return parent[x] == x ? x : parent[x] = find(parent[x]); };
-  int edges = 0;
-  for(const auto& c : p.curves()) {
-    const int a = c.cut_at_begin() ? add() : node(c.halfedge.source());
-    const int b = c.cut_at_end() ? add() : node(c.halfedge.target());
-    ++degree[a];
-    ++degree[b];
-    parent[find(a)] = find(b);
-    ++edges;
+  for(const auto& e : ends) {
+    ++degree[e.first];
+    ++degree[e.second];
+    parent[find(e.first)] = find(e.second);
   }
   Pruned_graph g;
-  for(int v = 0; v < int(parent.size()); ++v) {
+  for(int v = 0; v < n; ++v) {
     if(find(v) == v) ++g.components;
     if(degree[v] == 1) ++g.ends;
   }
-  g.cycles = edges - int(parent.size()) + g.components;
+  g.cycles = int(ends.size()) - n + g.components;
   return g;
 }
 
@@ -61,27 +68,15 @@ Pruned_graph pruned_graph(const CGAL::Pruned_medial_axis_2<K>& p)
 template <class K>
 double longest_path(const CGAL::Pruned_medial_axis_2<K>& p)
 {
-  std::map<std::size_t, int> vertex_node;
-  std::vector<std::vector<std::pair<int, double> > > adjacent;
-  auto add = [&]() {
-    adjacent.emplace_back();
-    return int(adjacent.size()) - 1;
-  };
-  auto node = [&](const typename CGAL::Medial_axis_2<K>::Vertex_handle& v) {
-    auto it = vertex_node.find(v.id_number());
-    if(it != vertex_node.end()) return it->second;
-    const int n = add();
-    vertex_node[v.id_number()] = n;
-    return n;
-  };
-  for(const auto& c : p.curves()) {
-    const int a = c.cut_at_begin() ? add() : node(c.halfedge.source());
-    const int b = c.cut_at_end() ? add() : node(c.halfedge.target());
-    adjacent[a].emplace_back(b, c.length());
-    adjacent[b].emplace_back(a, c.length());
+  int n = 0;
+  const std::vector<std::pair<int, int> > ends = pruned_ends(p, n);
+  std::vector<std::vector<std::pair<int, double> > > adjacent(static_cast<std::size_t>(n));
+  for(std::size_t i = 0; i < ends.size(); ++i) {
+    const double length = p.curves()[i].length();
+    adjacent[ends[i].first].emplace_back(ends[i].second, length);
+    adjacent[ends[i].second].emplace_back(ends[i].first, length);
   }
   double longest = 0;
-  const int n = int(adjacent.size());
   for(int e = 0; e < n; ++e) {
     if(adjacent[e].size() != 1) continue;
     std::vector<double> dist(std::size_t(n), -1);
