@@ -125,6 +125,11 @@ struct Options {
   std::string progressive;   // "", "region" or "boundary"
   double prune_et = 0, prune_ratio = 0, tolerance = -1;
   std::string centerline, width;
+  // whether a centerline or its width profile is asked for
+  bool centerline_asked() const { return !centerline.empty() || !width.empty(); }
+  // whether the axis is analysed after it is computed (significance,
+  // pruning, centerline)
+  bool analysed() const { return prune || centerline_asked(); }
 };
 
 // a finite number >= 0 from option text
@@ -337,8 +342,8 @@ void analyse(const Options& o, Polygon_job<Traits>& job)
 {
   typedef typename Traits::Kernel Kernel;
   const auto tp = std::chrono::steady_clock::now();
-  const bool centerline = !o.centerline.empty() || !o.width.empty();
-  if(o.prune || centerline) {
+  const bool centerline = o.centerline_asked();
+  if(o.analysed()) {
     job.significance.reset(new CGAL::Medial_axis_significance_2<Kernel>(*job.ma));
     double et = o.prune_et, ratio = o.prune_ratio;
     if(!o.prune) {   // the default pruning of a centerline: et = the largest radius
@@ -528,8 +533,7 @@ int run(const Options& o)
   // the run at once, or is repaired with --repair.
   const bool check_in_one_shot = !progressive && o.union_with.empty() && !o.repair;
 #ifdef CGAL_LINKED_WITH_TBB
-  on_this_thread = !progressive && o.union_with.empty() && !o.repair && input.size() == 1 && small_file &&
-                   threads == tbb::info::default_concurrency();
+  on_this_thread = check_in_one_shot && input.size() == 1 && small_file && threads == tbb::info::default_concurrency();
 #endif
   std::vector<std::string> errors(input.size());
   std::vector<double> validation_seconds(input.size(), 0);
@@ -724,7 +728,7 @@ int run(const Options& o)
   const double total_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   // significance, pruning and centerlines after the axes: time_total ends at
   // the final axis, they have time_prune of their own
-  if(o.prune || !o.centerline.empty() || !o.width.empty())
+  if(o.analysed())
     in_arena([&]() {
       for_each_polygon(largest_first(input), [&](std::size_t k) {
         if(jobs[k].ma) analyse(o, jobs[k]);
@@ -902,6 +906,7 @@ int run(const Options& o)
 
 int main(int argc, char** argv)
 {
+  Options o = parse(argc, argv);
 #ifdef __GLIBC__
   // glibc grows and shrinks each thread's heap in small steps, and with two
   // threads every shrink (and every growth of a thread's heap) makes the
@@ -910,9 +915,6 @@ int main(int argc, char** argv)
   // give memory back only above 256 MB; the pages never touched cost nothing.
   mallopt(M_TOP_PAD, 16 << 20);
   mallopt(M_TRIM_THRESHOLD, 256 << 20);
-#endif
-  Options o = parse(argc, argv);
-#ifdef __GLIBC__
   // Setting these also froze the size above which glibc maps each block
   // afresh (128 KB; it would otherwise rise as large blocks are freed).
   // When the axis is analysed afterwards, raise it to 32 MB, so that the
@@ -920,7 +922,7 @@ int main(int argc, char** argv)
   // ones: 10% to 15% of the analysis on real outlines, for a higher peak
   // (RESULTS.md, "Significance, pruning and centerline, fourth session").
   // Not for the axis alone: its peak on a 100,000-hole plate grows by 25%.
-  if(o.prune || !o.centerline.empty() || !o.width.empty()) mallopt(M_MMAP_THRESHOLD, 32 << 20);
+  if(o.analysed()) mallopt(M_MMAP_THRESHOLD, 32 << 20);
 #endif
   int status = 1;
   try {

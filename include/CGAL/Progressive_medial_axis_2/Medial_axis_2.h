@@ -566,7 +566,7 @@ public:
       m += std::size_t(kind[i] == 1);
       zero += std::size_t(kind[i] == 2);
     }
-    curves.resize(m + 1);
+    curves.resize(m + 1);   // a spare slot: a pair that is no curve is written there, then overwritten
     std::size_t k = 0;
     for(std::size_t i = 0; i < pairs; ++i) {
       curves[k] = int(2 * i);

@@ -434,6 +434,7 @@ Medial_axis_centerline_2<K> medial_axis_centerline_2(const Pruned_medial_axis_2<
     if(links[std::size_t(l)].a != from_node) std::swap(p.from, p.to);
     return p;
   };
+  auto unused = [&](int k) { return link_state[std::size_t(at(k))] == 0; };
   // the path from node v along its incidence k; returns the node it ends at
   auto walk = [&](int v, int k) {
     Path path;
@@ -447,7 +448,7 @@ Medial_axis_centerline_2<K> medial_axis_centerline_2(const Pruned_medial_axis_2<
       if(x.degree != 2) break;
       k = -1;
       for(int j = x.first; j < x.end; ++j)
-        if(link_state[std::size_t(at(j))] == 0) k = j;
+        if(unused(j)) k = j;
       if(k < 0) {
         path.closed = true;
         break;
@@ -456,10 +457,6 @@ Medial_axis_centerline_2<K> medial_axis_centerline_2(const Pruned_medial_axis_2<
     path.pieces.assign(buffer.begin(), buffer.end());
     out.paths_.push_back(std::move(path));
     return v;
-  };
-  auto unused = [&](int k) {
-    const int l = at(k);
-    return link_state[std::size_t(l)] == 0;
   };
   // a junction or end of the component of end_a, if it has one (end_a can
   // be a node of degree 2 when the axis has no end)

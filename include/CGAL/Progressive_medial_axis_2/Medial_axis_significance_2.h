@@ -346,8 +346,8 @@ private:
     std::vector<int> peel;
     peel.reserve(n);
     // pass 1: peeling, from each end up as long as the next node is ready
-    // (the records of the ends further on are fetched ahead: the curve of an
-    // end, then the node at its other end)
+    // (for the ends further on, the record of the node at the other end of
+    // their curve is fetched ahead)
     using Progressive_medial_axes::internal::prefetch;
     for(std::size_t v0 = 0; v0 < n; ++v0) {
       if(v0 + 8 < n && vertices_[v0 + 8].degree == 1) prefetch(&st[std::size_t(st[v0 + 8].parent)]);
