@@ -23,6 +23,7 @@
 #if defined(CGAL_LINKED_WITH_TBB) && !defined(CGAL_PMA2_NO_TBB)
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
 #endif
 
 #include <algorithm>
@@ -61,6 +62,36 @@ void parallel_blocks(std::size_t n, const F& f, bool parallel = true)
   (void)parallel;
 #endif
   f(std::size_t(0), n);
+}
+
+// Calls f(part, begin, end) on `parts` contiguous parts of [0, n) of about
+// the same size, in parallel where TBB is linked (f must only write what its
+// part owns).  For work that each part does in the order of [0, n), so that
+// the result does not depend on the number of parts.
+template <class F>
+void parallel_parts(std::size_t n, std::size_t parts, const F& f)
+{
+#if defined(CGAL_LINKED_WITH_TBB) && !defined(CGAL_PMA2_NO_TBB)
+  if(parts > 1) {
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, parts, 1), [&](const tbb::blocked_range<std::size_t>& r) {
+      for(std::size_t p = r.begin(); p < r.end(); ++p) f(p, n * p / parts, n * (p + 1) / parts);
+    });
+    return;
+  }
+#endif
+  for(std::size_t p = 0; p < parts; ++p) f(p, n * p / parts, n * (p + 1) / parts);
+}
+
+// The number of parts for parallel_parts(): the threads of the current
+// arena where TBB is linked, 1 otherwise, and 1 for less than `least` items.
+inline std::size_t number_of_parts(std::size_t n, std::size_t least = 65536)
+{
+#if defined(CGAL_LINKED_WITH_TBB) && !defined(CGAL_PMA2_NO_TBB)
+  if(n >= least) return std::size_t((std::max)(1, tbb::this_task_arena::max_concurrency()));
+#endif
+  (void)n;
+  (void)least;
+  return 1;
 }
 
 // A hint that the record at p is read soon: for the passes of the analysis

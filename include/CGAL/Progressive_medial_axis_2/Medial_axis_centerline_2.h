@@ -17,11 +17,15 @@
 #include <CGAL/Progressive_medial_axis_2/Medial_axis_significance_2.h>
 
 #include <algorithm>
+#include <array>
+#include <atomic>
 #include <cmath>
 #include <deque>
 #include <functional>
 #include <limits>
 #include <map>
+#include <memory>
+#include <numeric>
 #include <queue>
 #include <utility>
 #include <vector>
@@ -253,8 +257,11 @@ extended to the boundary with `extend`.  The two ends farthest apart come
 from two shortest-path searches on the graph of the junctions and ends of
 the pruned axis (each chain of curves between them is one link there; an
 axis without ends, such as that of a plate with holes, needs no search).
-The paths are then found depth first from the first end, so that the first
-path starts there.  O(m + k log k) for m kept curves and k junctions and
+The paths, the chains between the junctions and ends, are then walked in
+parallel where TBB is linked, each from the end of it that comes first in
+an order that does not depend on the threads: the first end's curves,
+then by node.  So a path that reaches the first end starts there, and the
+first path does.  O(m + k log k) for m kept curves and k junctions and
 ends, plus O(n) per extended end.
 */
 template <class K>
@@ -268,94 +275,111 @@ Medial_axis_centerline_2<K> medial_axis_centerline_2(const Pruned_medial_axis_2<
   const std::vector<Curve>& curves = pruned.curves();
   if(curves.empty()) return out;
 
-  // the graph: a node per kept vertex and per cut end
-  std::vector<int> vertex_node(pruned.medial_axis().vertex_id_bound(), -1);
-  int n_nodes = 0;
-  struct Link { int a, b; double length; };
-  std::vector<Link> links;
-  links.reserve(curves.size());
-  auto node_of_vertex = [&](const typename Medial_axis_2<K>::Vertex_handle& v) {
-    int& n = vertex_node[v.id_number()];
-    if(n < 0) n = n_nodes++;
-    return n;
-  };
-  for(const Curve& c : curves) {
-    const int a = c.cut_at_begin() ? n_nodes++ : node_of_vertex(c.source);
-    const int b = c.cut_at_end() ? n_nodes++ : node_of_vertex(c.target);
-    links.push_back(Link{a, b, c.length()});
-  }
-  // the curves at each node, in one array
+  // the graph: the nodes of the significance's graph at the ends of the
+  // kept curves, and a node per cut end (the pruned axis keeps them)
+  typedef typename Pruned_medial_axis_2<K>::Link Link;
+  const std::vector<Link>& links = pruned.links_;
+  const int n_nodes = pruned.number_of_nodes_;
+  // The curves at each node, in one array.  Set up in parts of the nodes, in
+  // parallel: each part reads all the links and writes what its nodes own,
+  // in the order of the links.
+  const std::size_t parts = Progressive_medial_axes::internal::number_of_parts(links.size());
   std::vector<int> first(std::size_t(n_nodes) + 1, 0);
-  for(const Link& l : links) {
-    ++first[std::size_t(l.a) + 1];
-    ++first[std::size_t(l.b) + 1];
-  }
+  Progressive_medial_axes::internal::parallel_parts(std::size_t(n_nodes), parts, [&](std::size_t, std::size_t b, std::size_t e) {
+    for(const Link& l : links) {
+      if(std::size_t(l.a) - b < e - b) ++first[std::size_t(l.a) + 1];
+      if(std::size_t(l.b) - b < e - b) ++first[std::size_t(l.b) + 1];
+    }
+  });
   for(std::size_t v = 0; v < std::size_t(n_nodes); ++v) first[v + 1] += first[v];
-  // with the link, the node at the other end and the length (what the
-  // searches and the walks read)
-  struct Near { int node, link; double length; };
+  // with the node at the other end and the link (what the searches and the
+  // walks read); half is 2 * link, plus 1 at the link's node b (a path
+  // leaving the node there walks the curve backwards)
+  struct Near { int node, half; };
   std::vector<Near> near(2 * links.size());
+  // the incidences of each link at its nodes a and b
+  std::vector<std::array<int, 2> > link_at(links.size());
   {
     std::vector<int> fill(first.begin(), first.end() - 1);
-    for(int i = 0; i < int(links.size()); ++i) {
-      const int ka = fill[std::size_t(links[i].a)]++, kb = fill[std::size_t(links[i].b)]++;
-      near[std::size_t(ka)] = Near{links[i].b, i, links[i].length};
-      near[std::size_t(kb)] = Near{links[i].a, i, links[i].length};
-    }
+    Progressive_medial_axes::internal::parallel_parts(std::size_t(n_nodes), parts, [&](std::size_t, std::size_t b, std::size_t e) {
+      for(int i = 0; i < int(links.size()); ++i) {
+        const Link& l = links[std::size_t(i)];
+        if(std::size_t(l.a) - b < e - b) {
+          const int k = fill[std::size_t(l.a)]++;
+          near[std::size_t(k)] = Near{l.b, 2 * i};
+          link_at[std::size_t(i)][0] = k;
+        }
+        if(std::size_t(l.b) - b < e - b) {
+          const int k = fill[std::size_t(l.b)]++;
+          near[std::size_t(k)] = Near{l.a, 2 * i + 1};
+          link_at[std::size_t(i)][1] = k;
+        }
+      }
+    });
   }
+  // the incidence of the same link at its other node
+  auto twin = [&](int k) {
+    const int h = near[std::size_t(k)].half;
+    return link_at[std::size_t(h >> 1)][std::size_t(1 - (h & 1))];
+  };
   struct Curves_at {   // the links at a node
     const Near *b, *e;
     struct iterator {
       const Near* p;
-      int operator*() const { return p->link; }
+      int operator*() const { return p->half >> 1; }
       iterator& operator++() { ++p; return *this; }
       bool operator!=(const iterator& o) const { return p != o.p; }
     };
     iterator begin() const { return iterator{b}; }
     iterator end() const { return iterator{e}; }
     std::size_t size() const { return std::size_t(e - b); }
-    int operator[](std::size_t i) const { return b[i].link; }
+    int operator[](std::size_t i) const { return b[i].half >> 1; }
   };
   auto incident = [&](int v) {
     return Curves_at{near.data() + first[std::size_t(v)], near.data() + first[std::size_t(v) + 1]};
   };
-  auto at = [&](int k) { return near[std::size_t(k)].link; };
+  auto at = [&](int k) { return near[std::size_t(k)].half >> 1; };
   auto other = [&](int link, int node) { return links[link].a == node ? links[link].b : links[link].a; };
 
-  // from an end (if there is none, the centerline is the cycles of node 0)
-  int start = -1;
-  for(int v = 0; v < n_nodes && start < 0; ++v)
+  // from an end (if there is none, the centerline is the cycles of the
+  // first node on a curve; nodes of the significance's graph that are not
+  // kept have no curve)
+  int start = -1, some = -1;
+  for(int v = 0; v < n_nodes && start < 0; ++v) {
     if(incident(v).size() == 1) start = v;
-  int end_a = 0, end_b = 0;
+    if(some < 0 && incident(v).size() > 0) some = v;
+  }
+  int end_a = some, end_b = some;
   if(start >= 0) {
     // The two searches run on the graph of the junctions and ends only: each
     // chain of nodes of degree 2 between them (most nodes, for example the
     // curves around a hole) is one link there, of the chain's total length.
     std::vector<int> key_of(std::size_t(n_nodes), -1), keys;
     for(int v = 0; v < n_nodes; ++v)
-      if(incident(v).size() != 2) {
+      if(incident(v).size() != 2 && incident(v).size() != 0) {
         key_of[std::size_t(v)] = int(keys.size());
         keys.push_back(v);
       }
     std::vector<int> key_first(keys.size() + 1, 0);
     for(std::size_t i = 0; i < keys.size(); ++i)
       key_first[i + 1] = key_first[i] + int(incident(keys[i]).size());
-    std::vector<Near> key_near(std::size_t(key_first.back()));
+    struct Key_link { int node; double length; };
+    std::vector<Key_link> key_near(std::size_t(key_first.back()));
     for(std::size_t i = 0; i < keys.size(); ++i) {
       const int v = keys[i];
       for(int k = first[std::size_t(v)]; k < first[std::size_t(v) + 1]; ++k) {
         // follow the chain to the next junction or end (a chain entered from
         // a junction cannot close on itself without one)
         int l = at(k), node = near[std::size_t(k)].node;
-        double length = near[std::size_t(k)].length;
+        double length = links[std::size_t(l)].length;
         while(key_of[std::size_t(node)] < 0) {
           const int f = first[std::size_t(node)];
           const int next = at(f) == l ? f + 1 : f;
           l = at(next);
-          length += near[std::size_t(next)].length;
+          length += links[std::size_t(l)].length;
           node = near[std::size_t(next)].node;
         }
-        key_near[std::size_t(key_first[i] + (k - first[std::size_t(v)]))] = Near{key_of[std::size_t(node)], -1, length};
+        key_near[std::size_t(key_first[i] + (k - first[std::size_t(v)]))] = Key_link{key_of[std::size_t(node)], length};
       }
     }
     // the end farthest from an end, along the curves (Dijkstra); on a tie the
@@ -394,19 +418,16 @@ Medial_axis_centerline_2<K> medial_axis_centerline_2(const Pruned_medial_axis_2<
   const bool a_is_end = incident(end_a).size() == 1, b_is_end = incident(end_b).size() == 1;
 
   // peel the side branches: remove the ends other than end_a and end_b
-  // (a node's incidences and degree left in one record: the walks below
-  // read them at every step)
-  struct Node_info { int first, end, degree; };
-  std::vector<Node_info> info(static_cast<std::size_t>(n_nodes));
-  // the state of each link: 0, REMOVED (a side branch), or USED (in a path)
-  enum { REMOVED = 1, USED = 2 };
+  std::vector<int> degree_left(static_cast<std::size_t>(n_nodes));
+  // the state of each link: 0, or REMOVED (a side branch)
+  enum { REMOVED = 1 };
   std::vector<char> link_state(links.size(), 0), removed_node(n_nodes, 0);
   std::deque<int> leaves;
   for(int v = 0; v < n_nodes; ++v) {
-    info[std::size_t(v)] = Node_info{first[std::size_t(v)], first[std::size_t(v) + 1], int(incident(v).size())};
-    if(info[std::size_t(v)].degree == 1 && v != end_a && v != end_b) leaves.push_back(v);
+    degree_left[std::size_t(v)] = int(incident(v).size());
+    if(degree_left[std::size_t(v)] == 1 && v != end_a && v != end_b) leaves.push_back(v);
   }
-  auto degree = [&](int v) { return info[std::size_t(v)].degree; };
+  auto degree = [&](int v) { return degree_left[std::size_t(v)]; };
   while(!leaves.empty()) {
     const int v = leaves.front();
     leaves.pop_front();
@@ -416,83 +437,169 @@ Medial_axis_centerline_2<K> medial_axis_centerline_2(const Pruned_medial_axis_2<
       if(link_state[l] == REMOVED) continue;
       link_state[l] = REMOVED;
       const int o = other(l, v);
-      if(--info[std::size_t(o)].degree == 1 && o != end_a && o != end_b) leaves.push_back(o);
+      if(--degree_left[std::size_t(o)] == 1 && o != end_a && o != end_b) leaves.push_back(o);
     }
   }
+  // The step of the walks below: next[k], for the incidence k of a link at
+  // a node, is the incidence by which a path goes on at the link's other
+  // node, -1 if that node is a junction or an end.  Set up in parallel
+  // (each node writes the entries of its own two links), so that a step of
+  // a walk reads one place instead of the node's degree, its incidences and
+  // their links' states.
+  std::vector<int> next(near.size(), -1);
+  Progressive_medial_axes::internal::parallel_blocks(std::size_t(n_nodes), [&](std::size_t b, std::size_t e) {
+    for(std::size_t v = b; v < e; ++v) {
+      if(degree_left[v] != 2) continue;
+      int j[2], c = 0;
+      for(int k = first[v]; k < first[v + 1]; ++k)
+        if(link_state[std::size_t(at(k))] != REMOVED) j[c++] = k;
+      next[std::size_t(twin(j[0]))] = j[1];
+      next[std::size_t(twin(j[1]))] = j[0];
+    }
+  });
+  // a junction or end of the component of end_a, if it has one (end_a can
+  // be a node of degree 2 when the axis has no end)
+  auto live = [&](int k) { return link_state[std::size_t(at(k))] != REMOVED; };
+  int root = end_a;
+  if(degree(end_a) == 2) {
+    int k = first[std::size_t(end_a)];
+    while(!live(k)) ++k;
+    int v = near[std::size_t(k)].node;
+    while(degree(v) == 2 && v != end_a) {
+      k = next[std::size_t(k)];
+      v = near[std::size_t(k)].node;
+    }
+    root = v;
+  }
   // The paths: the maximal chains between nodes of degree other than 2, of
-  // the component of end_a only, found depth first from end_a (so that a
-  // single path runs from one end to the other).  A path is built in a
-  // buffer and copied once, at its size.
-  std::vector<char> visited(std::size_t(n_nodes), 0);
-  std::vector<Piece> buffer;
-  auto piece_of = [&](int l, int from_node) {
-    const Curve& c = curves[std::size_t(l)];
+  // the component of end_a only.  A chain is walked from its start (a live
+  // incidence at a junction or an end) that comes first in the order:
+  // root's, then by node.  So the path at an end of the centerline starts
+  // there, and the paths come in that order.
+  // A step of a walk is a read that depends on the step before it (a
+  // random place in memory, for most steps): the walks are interleaved,
+  // Lanes at a time, so that their reads overlap.  Each chain is met from
+  // both of its starts; the later one skips it (or, when both were walked
+  // at once, drops it).
+  auto half = [&](int k) { return near[std::size_t(k)].half; };
+  auto piece_of = [&](int h) {   // the curve of a half, walked in its direction
+    const Curve& c = curves[std::size_t(h >> 1)];
     Piece p;
     p.halfedge = c.halfedge;
     p.from = c.begin;
     p.to = c.end;
-    if(links[std::size_t(l)].a != from_node) std::swap(p.from, p.to);
+    if(h & 1) std::swap(p.from, p.to);
     return p;
   };
-  auto unused = [&](int k) { return link_state[std::size_t(at(k))] == 0; };
-  // the path from node v along its incidence k; returns the node it ends at
-  auto walk = [&](int v, int k) {
-    Path path;
-    buffer.clear();
-    while(true) {
-      const int l = at(k);
-      link_state[std::size_t(l)] = USED;
-      buffer.push_back(piece_of(l, v));
-      v = near[std::size_t(k)].node;
-      const Node_info& x = info[std::size_t(v)];
-      if(x.degree != 2) break;
-      k = -1;
-      for(int j = x.first; j < x.end; ++j)
-        if(unused(j)) k = j;
-      if(k < 0) {
-        path.closed = true;
-        break;
-      }
-    }
-    path.pieces.assign(buffer.begin(), buffer.end());
-    out.paths_.push_back(std::move(path));
-    return v;
-  };
-  // a junction or end of the component of end_a, if it has one (end_a can
-  // be a node of degree 2 when the axis has no end)
-  int root = end_a;
-  if(degree(end_a) == 2) {
-    int k = first[std::size_t(end_a)];
-    while(link_state[std::size_t(at(k))] == REMOVED) ++k;
-    int v = end_a, l = at(k);
-    while(true) {
-      v = near[std::size_t(k)].node;
-      if(degree(v) != 2 || v == end_a) break;
-      for(int j = first[std::size_t(v)]; j < first[std::size_t(v) + 1]; ++j)
-        if(at(j) != l && link_state[std::size_t(at(j))] != REMOVED) k = j;
-      l = at(k);
-    }
-    root = v;
-  }
   if(degree(root) == 2) {   // a cycle without a junction
+    Path path;
+    path.closed = true;
     int k = first[std::size_t(root)];
-    while(!unused(k)) ++k;
-    walk(root, k);
-  } else {
-    std::vector<int> stack(1, root);
-    visited[std::size_t(root)] = 1;
-    while(!stack.empty()) {
-      const int v = stack.back();
-      stack.pop_back();
-      for(int k = first[std::size_t(v)]; k < first[std::size_t(v) + 1]; ++k)
-        if(unused(k)) {
-          const int t = walk(v, k);
-          if(!visited[std::size_t(t)]) {
-            visited[std::size_t(t)] = 1;
-            stack.push_back(t);
-          }
-        }
+    while(!live(k)) ++k;
+    while(true) {
+      path.pieces.push_back(piece_of(half(k)));
+      if(near[std::size_t(k)].node == root) break;
+      k = next[std::size_t(k)];
     }
+    out.paths_.push_back(std::move(path));
+  } else {
+    std::vector<int> starts, start_node;
+    auto add_starts = [&](int v) {
+      for(int k = first[std::size_t(v)]; k < first[std::size_t(v) + 1]; ++k)
+        if(live(k)) {
+          starts.push_back(k);
+          start_node.push_back(v);
+        }
+    };
+    add_starts(root);
+    const std::size_t root_starts = starts.size();
+    for(int v = 0; v < n_nodes; ++v)
+      if(v != root && degree(v) != 2) add_starts(v);
+    // whether the start at position i comes before incidence f (at node t)
+    // in that order
+    auto before = [&](std::size_t i, int f, int t) {
+      const bool ri = i < root_starts, rf = t == root;
+      return ri != rf ? ri : starts[i] < f;
+    };
+    // a start whose chain is walked (written and read by the parts at
+    // once: a part that misses a mark walks the chain again and drops it)
+    std::unique_ptr<std::atomic<char>[]> done(new std::atomic<char>[near.size()]());
+    // by part, the halves of its kept chains, one after the other
+    std::vector<std::vector<int> > seq(parts);
+    struct Chain { std::size_t part, begin, end; int to; };
+    std::vector<Chain> chains(starts.size(), Chain{0, 0, 0, -1});   // by start
+    Progressive_medial_axes::internal::parallel_parts(starts.size(), parts, [&](std::size_t part, std::size_t b, std::size_t e) {
+      std::vector<int>& out_seq = seq[part];
+      out_seq.reserve(links.size() / parts);
+      constexpr int Lanes = 16;
+      struct Lane { int at = -1, k = 0; std::vector<int> halves; };
+      Lane lanes[Lanes];
+      std::size_t next_start = b;
+      int busy = 0;
+      auto load = [&](Lane& x) {
+        while(next_start < e && done[std::size_t(starts[next_start])].load(std::memory_order_relaxed)) ++next_start;
+        if(next_start == e) {
+          x.at = -1;
+          return;
+        }
+        x.at = int(next_start);
+        x.k = starts[next_start++];
+        x.halves.clear();
+        ++busy;
+      };
+      for(Lane& x : lanes) load(x);
+      while(busy > 0)
+        for(Lane& x : lanes) {
+          if(x.at < 0) continue;
+          const int k = x.k;
+          x.halves.push_back(half(k));
+          const int n = next[std::size_t(k)];
+          if(n >= 0) {
+            x.k = n;
+            Progressive_medial_axes::internal::prefetch(&next[std::size_t(n)]);
+            Progressive_medial_axes::internal::prefetch(&near[std::size_t(n)]);
+            continue;
+          }
+          // the chain ends at incidence f of its last node
+          const int f = twin(k);
+          if(before(std::size_t(x.at), f, near[std::size_t(k)].node)) {
+            done[std::size_t(f)].store(1, std::memory_order_relaxed);
+            chains[std::size_t(x.at)] = Chain{part, out_seq.size(), out_seq.size() + x.halves.size(), near[std::size_t(k)].node};
+            out_seq.insert(out_seq.end(), x.halves.begin(), x.halves.end());
+          }
+          --busy;
+          load(x);
+        }
+    });
+    // the chains of the component of root (the axis of a polygon whose
+    // ring touches itself can have several components)
+    std::vector<int> component(static_cast<std::size_t>(n_nodes));
+    std::iota(component.begin(), component.end(), 0);
+    auto find = [&](int x) {
+      while(component[std::size_t(x)] != x) x = component[std::size_t(x)] = component[std::size_t(component[std::size_t(x)])];
+      return x;
+    };
+    for(std::size_t i = 0; i < chains.size(); ++i)
+      if(chains[i].to >= 0) component[std::size_t(find(start_node[i]))] = find(chains[i].to);
+    // the paths, in the order of their starts, built in parallel
+    std::vector<std::size_t> kept;
+    const int root_component = find(root);
+    for(std::size_t i = 0; i < chains.size(); ++i)
+      if(chains[i].to >= 0 && find(start_node[i]) == root_component) kept.push_back(i);
+    out.paths_.resize(kept.size());
+    Progressive_medial_axes::internal::parallel_blocks(kept.size(), [&](std::size_t b, std::size_t e) {
+      for(std::size_t i = b; i < e; ++i) {
+        const Chain& c = chains[kept[i]];
+        const std::vector<int>& halves = seq[c.part];
+        std::vector<Piece>& pieces = out.paths_[i].pieces;
+        pieces.reserve(c.end - c.begin);
+        for(std::size_t j = c.begin; j < c.end; ++j) {
+          // the curves are read in no order: ask for them ahead
+          if(j + 16 < halves.size()) Progressive_medial_axes::internal::prefetch(&curves[std::size_t(halves[j + 16] >> 1)]);
+          pieces.push_back(piece_of(halves[j]));
+        }
+      }
+    });
   }
 
   if(extend) {

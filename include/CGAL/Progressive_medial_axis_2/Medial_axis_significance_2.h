@@ -522,6 +522,12 @@ public:
   std::vector<char> kept_;   // by id number
   std::vector<std::pair<double, double> > points_;
   std::size_t pruned_ = 0;
+  // for the centerline, a graph: by kept curve, the nodes at its ends (those
+  // of the significance's graph, and a node of its own at each cut end) and
+  // its length; and the number of nodes
+  struct Link { int a, b; double length; };
+  std::vector<Link> links_;
+  int number_of_nodes_ = 0;
   /// \endcond
 
 private:
@@ -558,6 +564,8 @@ Pruned_medial_axis_2<K> prune_medial_axis_2(const Medial_axis_significance_2<K>&
   Pruned_medial_axis_2<K> out(sig.medial_axis());
   // at most one kept part per curve (pages that are not written cost nothing)
   out.curves_.reserve(arcs.size());
+  out.links_.reserve(arcs.size());
+  out.number_of_nodes_ = int(nodes.size());
 
   // the condition at a point of arc a, at arc length x from its node u, in
   // the form f >= 0 (f is concave along the curve)
@@ -623,6 +631,7 @@ Pruned_medial_axis_2<K> prune_medial_axis_2(const Medial_axis_significance_2<K>&
     if(!nodes[v].ignited) kept[v] = 1;
   std::vector<int> order(sig.order_of_fire().rbegin(), sig.order_of_fire().rend());
   std::vector<char> arc_done(arcs.size(), 0);
+  std::size_t whole = 0;   // kept curves that are not cut
   auto add_curve = [&](const Arc& a, double b, double e) {
     Curve c;
     c.halfedge = sig.halfedge(a);
@@ -635,7 +644,13 @@ Pruned_medial_axis_2<K> prune_medial_axis_2(const Medial_axis_significance_2<K>&
                              : et_of(nodes[a.u].time, nodes[a.u].radius);
     c.et_end = c.end < a.length ? et_of(Sig::time_along(a, c.end), c.halfedge.radius_at(c.end))
                                 : et_of(nodes[a.w].time, nodes[a.w].radius);
-    if(c.end > c.begin || (c.begin == 0 && c.end == a.length)) out.curves_.push_back(c);
+    if(c.end > c.begin || (c.begin == 0 && c.end == a.length)) {
+      out.curves_.push_back(c);
+      whole += std::size_t(!c.cut_at_begin() && !c.cut_at_end());
+      const int u = c.cut_at_begin() ? out.number_of_nodes_++ : a.u;
+      const int w = c.cut_at_end() ? out.number_of_nodes_++ : a.w;
+      out.links_.push_back({u, w, c.length()});
+    }
   };
   for(int v : order) {
     const Node& n = nodes[v];
@@ -679,14 +694,12 @@ Pruned_medial_axis_2<K> prune_medial_axis_2(const Medial_axis_significance_2<K>&
   for(std::size_t i = 0; i < arcs.size(); ++i)
     if(arcs[i].start[0] == inf && arcs[i].start[1] == inf) add_curve(arcs[i], 0, arcs[i].length);
   out.kept_.assign(sig.medial_axis().vertex_id_bound(), 0);
+  out.vertices_.reserve(nodes.size());
   for(int v = 0; v < int(nodes.size()); ++v)
     if(kept[v]) {
       out.vertices_.push_back(sig.vertex(v));
       out.kept_[std::size_t(nodes[v].vertex)] = 1;
     }
-  std::size_t whole = 0;
-  for(const Curve& c : out.curves_)
-    if(!c.cut_at_begin() && !c.cut_at_end()) ++whole;
   out.pruned_ = arcs.size() - whole;
   return out;
 }
