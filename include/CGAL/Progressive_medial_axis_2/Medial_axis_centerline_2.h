@@ -276,10 +276,28 @@ Medial_axis_centerline_2<K> medial_axis_centerline_2(const Pruned_medial_axis_2<
   if(curves.empty()) return out;
 
   // the graph: the nodes of the significance's graph at the ends of the
-  // kept curves, and a node per cut end (the pruned axis keeps them)
+  // kept curves, and a node per cut end (the pruned axis keeps them).  When
+  // few of the nodes are kept, they are numbered again, in the same order,
+  // so that the arrays below have the size of the pruned axis rather than
+  // that of the whole axis.
   typedef typename Pruned_medial_axis_2<K>::Link Link;
-  const std::vector<Link>& links = pruned.links_;
-  const int n_nodes = pruned.number_of_nodes_;
+  std::vector<Link> renumbered;
+  int n_nodes = pruned.number_of_nodes_;
+  if(8 * pruned.links_.size() < std::size_t(n_nodes)) {
+    std::vector<int> ids;
+    ids.reserve(2 * pruned.links_.size());
+    for(const Link& l : pruned.links_) {
+      ids.push_back(l.a);
+      ids.push_back(l.b);
+    }
+    std::sort(ids.begin(), ids.end());
+    ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
+    auto id = [&](int v) { return int(std::lower_bound(ids.begin(), ids.end(), v) - ids.begin()); };
+    renumbered.reserve(pruned.links_.size());
+    for(const Link& l : pruned.links_) renumbered.push_back(Link{id(l.a), id(l.b), l.length});
+    n_nodes = int(ids.size());
+  }
+  const std::vector<Link>& links = renumbered.empty() ? pruned.links_ : renumbered;
   // The curves at each node, in one array.  Set up in parts of the nodes, in
   // parallel: each part reads all the links and writes what its nodes own,
   // in the order of the links.
