@@ -437,9 +437,7 @@ Medial_axis_centerline_2<K> medial_axis_centerline_2(const Pruned_medial_axis_2<
 
   // peel the side branches: remove the ends other than end_a and end_b
   std::vector<int> degree_left(static_cast<std::size_t>(n_nodes));
-  // the state of each link: 0, or REMOVED (a side branch)
-  enum { REMOVED = 1 };
-  std::vector<char> link_state(links.size(), 0), removed_node(n_nodes, 0);
+  std::vector<char> removed_link(links.size(), 0), removed_node(n_nodes, 0);
   std::deque<int> leaves;
   for(int v = 0; v < n_nodes; ++v) {
     degree_left[std::size_t(v)] = int(incident(v).size());
@@ -452,8 +450,8 @@ Medial_axis_centerline_2<K> medial_axis_centerline_2(const Pruned_medial_axis_2<
     if(removed_node[v] || degree(v) != 1) continue;
     removed_node[v] = 1;
     for(int l : incident(v)) {
-      if(link_state[l] == REMOVED) continue;
-      link_state[l] = REMOVED;
+      if(removed_link[l]) continue;
+      removed_link[l] = 1;
       const int o = other(l, v);
       if(--degree_left[std::size_t(o)] == 1 && o != end_a && o != end_b) leaves.push_back(o);
     }
@@ -464,20 +462,20 @@ Medial_axis_centerline_2<K> medial_axis_centerline_2(const Pruned_medial_axis_2<
   // (each node writes the entries of its own two links), so that a step of
   // a walk reads one place instead of the node's degree, its incidences and
   // their links' states.
+  auto live = [&](int k) { return !removed_link[std::size_t(at(k))]; };
   std::vector<int> next(near.size(), -1);
   Progressive_medial_axes::internal::parallel_blocks(std::size_t(n_nodes), [&](std::size_t b, std::size_t e) {
     for(std::size_t v = b; v < e; ++v) {
       if(degree_left[v] != 2) continue;
       int j[2], c = 0;
       for(int k = first[v]; k < first[v + 1]; ++k)
-        if(link_state[std::size_t(at(k))] != REMOVED) j[c++] = k;
+        if(live(k)) j[c++] = k;
       next[std::size_t(twin(j[0]))] = j[1];
       next[std::size_t(twin(j[1]))] = j[0];
     }
   });
   // a junction or end of the component of end_a, if it has one (end_a can
   // be a node of degree 2 when the axis has no end)
-  auto live = [&](int k) { return link_state[std::size_t(at(k))] != REMOVED; };
   int root = end_a;
   if(degree(end_a) == 2) {
     int k = first[std::size_t(end_a)];
