@@ -637,7 +637,12 @@ struct Coordinate_span {
 };
 
 /// An event time of the filtered traits: an interval that encloses it, and
-/// what is needed to evaluate it again more precisely on demand.
+/// what is needed to evaluate it again more precisely on demand.  Most
+/// times are decided by their interval alone, and a time is copied into
+/// the merge's records (the open edges, the events): it holds the interval,
+/// the kind and the sites (200 bytes), and one pointer to what the more
+/// precise stages computed, shared by its copies.  The relations of its
+/// sites are computed again by those stages (CK: the kernel of the sites).
 template <class Site_2>
 class Filtered_event_time
 {
@@ -648,30 +653,6 @@ public:
   Filtered_event_time() : approx_(0) {}
   const Interval& approx() const { return approx_; }
   double to_double() const { return CGAL::to_double(approx_); }
-
-  /// The time in MPFR intervals at the current MPFR precision, computed
-  /// once: -1 if a branch of the computation cannot be decided, 0 if the
-  /// event does not exist, 1 if `*value` holds the time.
-  int mpfr(const Mpfr** value) const
-  {
-    if(mpfr_state_ == 2) {
-      mpfr_state_ = -1;
-      try {
-        To_nt_convert<Mpfr> cv;
-        Mpfr t;
-        bool undecided = false;
-        if(evaluate_time<Mpfr>(kind_, c_, s_, rel_, cv, t, nullptr, &undecided)) {
-          mpfr_ = std::make_shared<Mpfr>(t);
-          mpfr_state_ = 1;
-        } else if(!undecided) {
-          mpfr_state_ = 0;
-        }
-      } catch(Uncertain_conversion_exception&) {
-      }
-    }
-    *value = mpfr_.get();
-    return mpfr_state_;
-  }
 
   /// The time as alpha + sqrt(rho) in one-root numbers, with small
   /// rationals when they suffice, else with GMP rationals (Gmp_rational).
@@ -690,64 +671,115 @@ public:
     Interval to_interval() const { return small ? small_value.to_interval() : big_value->to_interval(); }
   };
 
+  /// What the stages after the intervals found, computed once.
+  struct Exact_values {
+    std::unique_ptr<Mpfr> mpfr;
+    signed char mpfr_state = 2;     // 2 not computed yet, else as returned by mpfr()
+    std::unique_ptr<One_root_value> one_root;
+    signed char one_root_state = 0; // 0 unknown, 1 one_root holds it, -1 not a one-root number
+    signed char short_state = 0;    // 0 unknown, else the sign is short_coordinates()
+    std::shared_ptr<char> tie;       // shared by times found exactly equal
+  };
+
+  /// The time in MPFR intervals at the current MPFR precision, computed
+  /// once: -1 if a branch of the computation cannot be decided, 0 if the
+  /// event does not exist, 1 if `*value` holds the time.
+  template <class CK>
+  int mpfr(const Mpfr** value) const
+  {
+    Exact_values& x = exact();
+    if(x.mpfr_state == 2) {
+      x.mpfr_state = -1;
+      try {
+        To_nt_convert<Mpfr> cv;
+        Mpfr t;
+        bool undecided = false;
+        if(evaluate_time<Mpfr>(kind_, c_, s_, relations<CK>(), cv, t, nullptr, &undecided)) {
+          x.mpfr.reset(new Mpfr(t));
+          x.mpfr_state = 1;
+        } else if(!undecided) {
+          x.mpfr_state = 0;
+        }
+      } catch(Uncertain_conversion_exception&) {
+      }
+    }
+    *value = x.mpfr.get();
+    return x.mpfr_state;
+  }
+
   /// The time in one-root numbers, or null if it does not have that form.
+  template <class CK>
   const One_root_value* one_root() const
   {
-    if(one_root_state_ == 0) {
-      one_root_state_ = -1;
-      auto v = std::make_shared<One_root_value>();
+    Exact_values& x = exact();
+    if(x.one_root_state == 0) {
+      x.one_root_state = -1;
+      std::unique_ptr<One_root_value> v(new One_root_value);
       try {
+        const Triple_relations rel = relations<CK>();
         try {
           if(!short_coordinates())
             throw Small_rational_overflow();
           To_nt_convert<Small_one_root> cv;
-          v->exists = evaluate_time<Small_one_root>(kind_, c_, s_, rel_, cv, v->small_value.alpha, &v->small_value.rho);
+          v->exists = evaluate_time<Small_one_root>(kind_, c_, s_, rel, cv, v->small_value.alpha, &v->small_value.rho);
           v->small = true;
         } catch(Small_rational_overflow&) {
           To_nt_convert<One_root_rational> cv;
           One_root_sqrt t;
-          v->exists = evaluate_time<One_root_rational>(kind_, c_, s_, rel_, cv, t.alpha, &t.rho);
+          v->exists = evaluate_time<One_root_rational>(kind_, c_, s_, rel, cv, t.alpha, &t.rho);
           v->big_value = std::make_shared<One_root_sqrt>(t);
         }
-        one_root_ = v;
-        one_root_state_ = 1;
+        x.one_root = std::move(v);
+        x.one_root_state = 1;
       } catch(Not_one_root&) {
       }
     }
-    return one_root_state_ > 0 ? one_root_.get() : nullptr;
+    return x.one_root_state > 0 ? x.one_root.get() : nullptr;
   }
 
   /// Whether the coordinates of the sites span at most 24 bits (see
   /// Coordinate_span).
   bool short_coordinates() const
   {
-    if(short_state_ == 0) {
+    Exact_values& x = exact();
+    if(x.short_state == 0) {
       Coordinate_span span;
       span.add(c_);
       if(kind_ > TIME_END)
         for(int i = 0; i < 3; ++i) span.add(s_[i]);
-      short_state_ = span.is_short() ? 1 : -1;
+      x.short_state = span.is_short() ? 1 : -1;
     }
-    return short_state_ > 0;
+    return x.short_state > 0;
   }
 
   /// The time in nested-root numbers, in the current Nested_root_context.
+  template <class CK>
   bool nested(Nested_root_number& t) const
   {
     To_nt_convert<Nested_root_number> cv;
-    return evaluate_time<Nested_root_number>(kind_, c_, s_, rel_, cv, t);
+    return evaluate_time<Nested_root_number>(kind_, c_, s_, relations<CK>(), cv, t);
   }
 
-  Time_kind kind_ = TIME_ZERO;
+  /// The relations of the sites (none for the kinds without sites).
+  template <class CK>
+  Triple_relations relations() const
+  {
+    return kind_ > TIME_END ? triple_relations<CK>(s_) : Triple_relations();
+  }
+
+  /// The stages' values, shared by the copies of this time (created at the
+  /// first need).
+  Exact_values& exact() const
+  {
+    if(!exact_)
+      exact_ = std::make_shared<Exact_values>();
+    return *exact_;
+  }
+
   Interval approx_;
+  Time_kind kind_ = TIME_ZERO;
   Site_2 c_, s_[3];
-  Triple_relations rel_;
-  mutable std::shared_ptr<Mpfr> mpfr_;
-  mutable signed char mpfr_state_ = 2;     // 2 not computed yet, else as returned by mpfr()
-  mutable std::shared_ptr<One_root_value> one_root_;
-  mutable signed char one_root_state_ = 0; // 0 unknown, 1 one_root_ holds it, -1 not a one-root number
-  mutable signed char short_state_ = 0;    // 0 unknown, else the sign is short_coordinates()
-  mutable std::shared_ptr<char> tie_;       // shared by times found exactly equal
+  mutable std::shared_ptr<Exact_values> exact_;
 };
 
 
@@ -815,16 +847,12 @@ private:
   {
     t.kind_ = kind;
     t.c_ = line;
+    Progressive_medial_axes::internal::Triple_relations rel;
     if(s != nullptr) {
       for(int i = 0; i < 3; ++i) t.s_[i] = s[i];
-      t.rel_ = Progressive_medial_axes::internal::triple_relations<CK>(s);
+      rel = Progressive_medial_axes::internal::triple_relations<CK>(s);
     }
-    t.one_root_.reset();
-    t.one_root_state_ = 0;
-    t.short_state_ = 0;
-    t.mpfr_.reset();
-    t.mpfr_state_ = 2;
-    t.tie_.reset();
+    t.exact_.reset();
     ++filter_statistics().interval_evaluations;
     {
       Protect_FPU_rounding<true> protection;
@@ -832,7 +860,7 @@ private:
         Interval v;
         Progressive_medial_axes::internal::To_nt_convert<Interval> cv;
         bool undecided = false;
-        bool ok = Progressive_medial_axes::internal::evaluate_time<Interval>(kind, line, t.s_, t.rel_, cv, v, nullptr,
+        bool ok = Progressive_medial_axes::internal::evaluate_time<Interval>(kind, line, t.s_, rel, cv, v, nullptr,
                                                                                &undecided);
         if(!ok && !undecided)
           return false;
@@ -847,7 +875,7 @@ private:
     const std::optional<bool> decided = before_exact<bool>(
       [&]() -> std::optional<bool> {
         const Mpfr* v;
-        const int state = t.mpfr(&v);
+        const int state = t.template mpfr<CK>(&v);
         if(state < 0)
           return std::nullopt;
         if(state == 0)
@@ -856,7 +884,7 @@ private:
         return true;
       },
       [&]() -> std::optional<bool> {
-        const typename Event_time_2::One_root_value* v = t.one_root();
+        const typename Event_time_2::One_root_value* v = t.template one_root<CK>();
         if(v == nullptr)
           return std::nullopt;
         ++filter_statistics().rational_evaluations;
@@ -870,7 +898,7 @@ private:
     ++filter_statistics().exact_evaluations;
     Progressive_medial_axes::internal::Nested_root_context context;
     Nested v;
-    if(!t.nested(v))
+    if(!t.template nested<CK>(v))
       return false;
     t.approx_ = v.to_interval();
     return true;
@@ -894,12 +922,12 @@ private:
     if(a.kind_ == b.kind_ && a.kind_ <= Progressive_medial_axes::internal::TIME_END && a.c_ == b.c_)
       return EQUAL;
     // already found equal
-    if(a.tie_ && a.tie_ == b.tie_)
+    if(a.exact_ && b.exact_ && a.exact_->tie && a.exact_->tie == b.exact_->tie)
       return EQUAL;
     const std::optional<Comparison_result> decided = before_exact<Comparison_result>(
       [&]() -> std::optional<Comparison_result> {
         const Mpfr *va, *vb;
-        if(a.mpfr(&va) != 1 || b.mpfr(&vb) != 1)
+        if(a.template mpfr<CK>(&va) != 1 || b.template mpfr<CK>(&vb) != 1)
           return std::nullopt;
         Uncertain<Comparison_result> m = compare(*va, *vb);
         if(!is_certain(m))
@@ -908,8 +936,8 @@ private:
         return get_certain(m);
       },
       [&]() -> std::optional<Comparison_result> {
-        const typename Event_time_2::One_root_value* ra = a.one_root();
-        const typename Event_time_2::One_root_value* rb = ra ? b.one_root() : nullptr;
+        const typename Event_time_2::One_root_value* ra = a.template one_root<CK>();
+        const typename Event_time_2::One_root_value* rb = ra ? b.template one_root<CK>() : nullptr;
         if(rb == nullptr)
           return std::nullopt;
         CGAL_assertion(ra->exists && rb->exists);
@@ -931,7 +959,7 @@ private:
     ++filter_statistics().exact_comparisons;
     Progressive_medial_axes::internal::Nested_root_context context;
     Nested ta, tb;
-    const bool ok = a.nested(ta) && b.nested(tb);
+    const bool ok = a.template nested<CK>(ta) && b.template nested<CK>(tb);
     CGAL_assertion(ok);
     CGAL_USE(ok);
     return tie(a, b, Comparison_result(int(sign_of_difference(ta, tb))));
@@ -942,9 +970,10 @@ private:
   {
     if(r == EQUAL) {
       ++filter_statistics().exact_ties;
-      if(!a.tie_)
-        a.tie_ = std::make_shared<char>(0);
-      b.tie_ = a.tie_;
+      std::shared_ptr<char>& id = a.exact().tie;
+      if(!id)
+        id = std::make_shared<char>(0);
+      b.exact().tie = id;
     }
     return r;
   }

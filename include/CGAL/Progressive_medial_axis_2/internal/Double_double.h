@@ -47,22 +47,28 @@ public:
   friend Double_double operator-(const Double_double& a, const Double_double& b) { return a + (-b); }
   friend Double_double operator*(const Double_double& a, const Double_double& b)
   {
-    double p = a.hi_ * b.hi_;
-    double e = std::fma(a.hi_, b.hi_, -p);
+    double p, e;
+    two_product(a.hi_, b.hi_, p, e);
     e += a.hi_ * b.lo_ + a.lo_ * b.hi_;
+    fast_two_sum(p, e, p, e);
+    return Double_double(p, e);
+  }
+  friend Double_double operator*(const Double_double& a, double b)
+  {
+    double p, e;
+    two_product(a.hi_, b, p, e);
+    e += a.lo_ * b;
     fast_two_sum(p, e, p, e);
     return Double_double(p, e);
   }
   friend Double_double operator/(const Double_double& a, const Double_double& b)
   {
-    double q1 = a.hi_ / b.hi_;
-    Double_double r = a - b * Double_double(q1);
-    double q2 = r.hi_ / b.hi_;
-    r = r - b * Double_double(q2);
-    double q3 = r.hi_ / b.hi_;
+    const double q1 = a.hi_ / b.hi_;
+    const Double_double r = a - b * q1;
+    const double q2 = r.hi_ / b.hi_;
     double s, e;
     fast_two_sum(q1, q2, s, e);
-    return Double_double(s, e) + Double_double(q3);
+    return Double_double(s, e);
   }
   Double_double& operator+=(const Double_double& b) { return *this = *this + b; }
   Double_double& operator-=(const Double_double& b) { return *this = *this - b; }
@@ -97,6 +103,23 @@ private:
     s = a + b;
     double bb = s - a;
     e = (a - (s - bb)) + (b - bb);
+  }
+  // p + e = a b exactly: a fused multiply-add where the compiler has one,
+  // else Dekker's product of Veltkamp halves (a call of std::fma through
+  // the library costs more than these ten operations)
+  static void two_product(double a, double b, double& p, double& e)
+  {
+    p = a * b;
+#ifdef __FMA__
+    e = std::fma(a, b, -p);
+#else
+    const double split = 134217729.0;   // 2^27 + 1
+    double t = split * a;
+    const double ah = t - (t - a), al = a - ah;
+    t = split * b;
+    const double bh = t - (t - b), bl = b - bh;
+    e = ((ah * bh - p) + ah * bl + al * bh) + al * bl;
+#endif
   }
   static void fast_two_sum(double a, double b, double& s, double& e)
   {

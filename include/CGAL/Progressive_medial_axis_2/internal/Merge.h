@@ -195,9 +195,10 @@ public:
     CGAL_PMA2_TRACE_MSG("merge P=" << P_ << " Q=" << Q_ << " turns " << int(turn_P) << " " << int(turn_Q));
     start_ = traits_.compute_start_time_2_object()(line_);
     end_ = traits_.compute_end_time_2_object()(line_);
-    now_ = start_;
-    nodes_.push_back(Node{Cp_, NO_INDEX, 1, NO_INDEX, NO_INDEX, now_});
-    nodes_.push_back(Node{Cm_, 0, NO_INDEX, NO_INDEX, NO_INDEX, now_});
+    times_.clear();
+    times_.push_back(start_);
+    nodes_.push_back(Node{Cp_, NO_INDEX, 1, NO_INDEX, NO_INDEX, 0});
+    nodes_.push_back(Node{Cm_, 0, NO_INDEX, NO_INDEX, NO_INDEX, 0});
 
     if(slit_P)
       initialize_slit();
@@ -237,7 +238,7 @@ private:
     int prev, next;
     int right_he;   // open edge to the next node: half-edge of this face, start -> end
     int event;      // current vanishing candidate
-    Time opened;    // when right_he was opened
+    int opened;     // when right_he was opened (an index of times_)
   };
   struct Event {
     Time time;
@@ -311,7 +312,7 @@ private:
   {
     int id = int(nodes_.size());
     int nx = nodes_[n].next;
-    nodes_.push_back(Node{face, n, nx, NO_INDEX, NO_INDEX, now_});
+    nodes_.push_back(Node{face, n, nx, NO_INDEX, NO_INDEX, now_index()});
     nodes_[n].next = id;
     nodes_[nx].prev = id;
     return id;
@@ -324,12 +325,12 @@ private:
   }
 
   // The open edge of node n ends now, at vertex v (or at time t).
-  void close_edge(int n, int v) { close_edge(n, v, now_); }
+  void close_edge(int n, int v) { close_edge(n, v, now()); }
   void close_edge(int n, int v, const Time& t)
   {
     const int h = nodes_[n].right_he;
     hds_.he(h).vertex = v;
-    if(compare_(t, nodes_[n].opened) != EQUAL)
+    if(compare_(t, times_[std::size_t(nodes_[n].opened)]) != EQUAL)
       return;
     if(compare_(t, start_) == LARGER && compare_(t, end_) == SMALLER)
       hds_.set_zero_length(h, true);
@@ -528,7 +529,7 @@ private:
     Time t;
     if(!traits_.compute_vanishing_time_2_object()(line_, site(fa), site(fb), site(fc), t))
       return;
-    if(traits_.is_event_in_past_2_object()(t, now_, line_))
+    if(traits_.is_event_in_past_2_object()(t, now(), line_))
       return;
     int ev = int(events_.size());
     events_.push_back(Event{t, n, true});
@@ -562,8 +563,8 @@ private:
 
   void advance_time(const Time& t)
   {
-    if(compare_(t, now_) == LARGER)
-      now_ = t;
+    if(compare_(t, now()) == LARGER)
+      times_.push_back(t);
   }
 
   // ---- the sweep (Algorithm 5) ----
@@ -607,10 +608,9 @@ private:
         switch_minus(sw_minus_[im++]);
         visitor.on_switch();
       } else {
-        Time t = events_[ev].time;
-        int n = events_[ev].node;
-        pop_event();
-        advance_time(t);
+        const int n = events_[ev].node;
+        pop_event();                    // (marks the event, keeps its record)
+        advance_time(events_[ev].time);
         vanish(n);
         visitor.on_vanish();
       }
@@ -646,7 +646,7 @@ private:
     hds_.link(Hds::twin(h), hds_.next(s.te_new));
     hds_.vertex(s.vertex).halfedge = Hds::twin(h);
     nodes_[last].right_he = h;
-    nodes_[last].opened = now_;
+    nodes_[last].opened = now_index();
     update_candidate(last);
   }
 
@@ -666,7 +666,7 @@ private:
     hds_.link(Hds::twin(AC), Hds::twin(BC));
     hds_.vertex(v).halfedge = AB;
     nodes_[a].right_he = AC;
-    nodes_[a].opened = now_;
+    nodes_[a].opened = now_index();
     invalidate(n);
     unlink_node(n);
     if(strict_ && nodes_[a].face == nodes_[c].face) throw Merge_anomaly();
@@ -774,7 +774,12 @@ private:
   Merge_statistics stats_;
   int Cp_ = NO_INDEX, Cm_ = NO_INDEX, vP_ = NO_INDEX, vQ_ = NO_INDEX, P_ = NO_INDEX, Q_ = NO_INDEX;
   Site_2 line_, site_p_, site_m_;
-  Time now_, start_, end_;
+  Time start_, end_;
+  // the sweep's times so far, the last one now (the nodes refer to them by
+  // index: a time of the filtered traits is 200 bytes)
+  std::vector<Time> times_;
+  const Time& now() const { return times_.back(); }
+  int now_index() const { return int(times_.size()) - 1; }
   bool strict_ = false;
 
   std::vector<int> plus_, minus_;
