@@ -638,9 +638,9 @@ struct Coordinate_span {
 
 /// An event time of the filtered traits: an interval that encloses it, and
 /// what is needed to evaluate it again more precisely on demand.  Most
-/// times are decided by their interval alone, and a time is copied into
-/// the merge's records (the open edges, the events): it holds the interval,
-/// the kind and the sites (200 bytes), and one pointer to what the more
+/// times are decided by their interval alone, and the merge stores a time
+/// in each of its events: the time holds the interval, the kind and the
+/// sites (208 bytes with Epick on x86-64), and one pointer to what the more
 /// precise stages computed, shared by its copies.  The relations of its
 /// sites are computed again by those stages (CK: the kernel of the sites).
 template <class Site_2>

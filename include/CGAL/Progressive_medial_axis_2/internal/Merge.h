@@ -776,7 +776,7 @@ private:
   Site_2 line_, site_p_, site_m_;
   Time start_, end_;
   // the sweep's times so far, the last one now (the nodes refer to them by
-  // index: a time of the filtered traits is 200 bytes)
+  // index: a time of the filtered traits is about 200 bytes)
   std::vector<Time> times_;
   const Time& now() const { return times_.back(); }
   int now_index() const { return int(times_.size()) - 1; }
