@@ -288,7 +288,8 @@ struct To_nt_convert {
   {
     if constexpr(std::is_same<NT, Interval_nt<false> >::value) return NT(CGAL::to_interval(x));
     else if constexpr(std::is_same<NT, Double_double>::value) return NT(CGAL::to_double(x));
-    else if constexpr(std::is_same<NT, Small_one_root>::value) return NT(Small_rational(exact_gmpq(x)));
+    else if constexpr(std::is_same<NT, Small_one_root>::value || std::is_same<NT, Small_nested_root_number>::value)
+      return NT(Small_rational(exact_gmpq(x)));
     else if constexpr(std::is_same<NT, double>::value) return CGAL::to_double(x);
     else return NT(exact_gmpq(x));
   }
@@ -752,12 +753,13 @@ public:
     return x.short_state > 0;
   }
 
-  /// The time in nested-root numbers, in the current Nested_root_context.
-  template <class CK>
-  bool nested(Nested_root_number& t) const
+  /// The time in nested-root numbers N (Nested_root_number or
+  /// Small_nested_root_number), in the current context of N.
+  template <class CK, class N>
+  bool nested(N& t) const
   {
-    To_nt_convert<Nested_root_number> cv;
-    return evaluate_time<Nested_root_number>(kind_, c_, s_, relations<CK>(), cv, t);
+    To_nt_convert<N> cv;
+    return evaluate_time<N>(kind_, c_, s_, relations<CK>(), cv, t);
   }
 
   /// The relations of the sites (none for the kinds without sites).
@@ -896,12 +898,13 @@ private:
     if(decided)
       return *decided;
     ++filter_statistics().exact_evaluations;
-    Progressive_medial_axes::internal::Nested_root_context context;
-    Nested v;
-    if(!t.template nested<CK>(v))
-      return false;
-    t.approx_ = v.to_interval();
-    return true;
+    return with_nested_numbers(t.short_coordinates(), [&](auto number) {
+      decltype(number) v;
+      if(!t.template nested<CK>(v))
+        return false;
+      t.approx_ = v.to_interval();
+      return true;
+    });
   }
 
   // The foot of a point on the separator.
@@ -957,12 +960,14 @@ private:
     if(decided)
       return *decided;
     ++filter_statistics().exact_comparisons;
-    Progressive_medial_axes::internal::Nested_root_context context;
-    Nested ta, tb;
-    const bool ok = a.template nested<CK>(ta) && b.template nested<CK>(tb);
-    CGAL_assertion(ok);
-    CGAL_USE(ok);
-    return tie(a, b, Comparison_result(int(sign_of_difference(ta, tb))));
+    const Sign sign = with_nested_numbers(a.short_coordinates() && b.short_coordinates(), [&](auto number) {
+      decltype(number) ta, tb;
+      const bool ok = a.template nested<CK>(ta) && b.template nested<CK>(tb);
+      CGAL_assertion(ok);
+      CGAL_USE(ok);
+      return sign_of_difference(ta, tb);
+    });
+    return tie(a, b, Comparison_result(int(sign)));
   }
 
   // Remembers that a and b are equal, so that comparing them again is immediate.
@@ -1050,13 +1055,15 @@ private:
     if(decided)
       return *decided;
     ++filter_statistics().exact_evaluations;
-    Progressive_medial_axes::internal::Nested_root_context context;
-    Progressive_medial_axes::internal::Circle_nt<Nested> circle;
-    if(!disk_nt<Nested>(s, rel, circle))
-      return false;
-    centre = Point_2(circle.x.to_double(), circle.y.to_double());
-    radius = circle.r.to_double();
-    return true;
+    return with_nested_numbers(short_coordinates(s, s), [&](auto number) {
+      typedef decltype(number) N;
+      Progressive_medial_axes::internal::Circle_nt<N> circle;
+      if(!disk_nt<N>(s, rel, circle))
+        return false;
+      centre = Point_2(circle.x.to_double(), circle.y.to_double());
+      radius = circle.r.to_double();
+      return true;
+    });
   }
 
   // Whether two triples define the same disk: double intervals, then the
@@ -1100,8 +1107,7 @@ private:
       [&]() -> std::optional<bool> { return with_one_root_numbers(equal); }, short_coordinates(s, t));
     if(decided)
       return *decided;
-    Progressive_medial_axes::internal::Nested_root_context context;
-    return equal(Nested());
+    return with_nested_numbers(short_coordinates(s, t), equal);
   }
 
   // f(number) with the small one-root numbers, or with the GMP ones where
@@ -1114,6 +1120,23 @@ private:
     } catch(Progressive_medial_axes::internal::Small_rational_overflow&) {
       return f(Progressive_medial_axes::internal::One_root_rational());
     }
+  }
+
+  // f(number) in nested-root numbers, in a context of their own: with
+  // Small_rational coefficients first if the coordinates are short, with
+  // Gmpq where those overflow (the roots of the first try are dropped).
+  template <class F>
+  static auto with_nested_numbers(bool short_coordinates, const F& f)
+  {
+    if(short_coordinates) {
+      try {
+        Progressive_medial_axes::internal::Small_nested_root_context context;
+        return f(Progressive_medial_axes::internal::Small_nested_root_number());
+      } catch(Progressive_medial_axes::internal::Small_rational_overflow&) {
+      }
+    }
+    Progressive_medial_axes::internal::Nested_root_context context;
+    return f(Nested());
   }
 
   // Whether the sites of two triples have short coordinates (Coordinate_span).

@@ -26,6 +26,8 @@ using CGAL::Progressive_medial_axes::internal::Small_rational_overflow;
 using CGAL::Progressive_medial_axes::internal::Small_one_root;
 using CGAL::Progressive_medial_axes::internal::Nested_root_context;
 using CGAL::Progressive_medial_axes::internal::Nested_root_number;
+using CGAL::Progressive_medial_axes::internal::Small_nested_root_context;
+using CGAL::Progressive_medial_axes::internal::Small_nested_root_number;
 using CGAL::Progressive_medial_axes::internal::Mpfr_interval;
 using CGAL::Progressive_medial_axes::internal::Mpfr_precision_scope;
 
@@ -55,8 +57,7 @@ double sign_mpfr(long a1, long b1, long d1, long a2, long b2, long d2)
   return r;
 }
 
-typedef Nested_root_number N;
-
+template <class N>
 N nroot(const N& x) { return sqrt(x); }
 
 // sign of (expression evaluated by f in MPFR at 4096 bits), 0 if below 1e-1000
@@ -72,9 +73,12 @@ CGAL::Sign mpfr_sign(const F& f)
   return s;
 }
 
+// The same tests for both rational types of the coefficients (the small
+// one fits every number here).
+template <class N, class Context>
 void nested_root_tests()
 {
-  Nested_root_context context;
+  Context context;
   const N two(2), three(3);
   const N s2 = nroot(two), s3 = nroot(three), s6 = nroot(N(6)), s8 = nroot(N(8));
   CHECK(s8 * s2 == N(4), "nested: sqrt 8 * sqrt 2 = 4");
@@ -101,7 +105,7 @@ void nested_root_tests()
   std::uniform_int_distribution<int> small(-9, 9), pos(1, 30);
   int compared = 0;
   for(int i = 0; i < 300; ++i) {
-    Nested_root_context local;
+    Context local;
     const int a = small(rng), b = small(rng), c = pos(rng) + 50, e = small(rng), f = pos(rng), g = small(rng), h = pos(rng);
     const N x = N(a) + N(b) * nroot(N(c) + N(e) * nroot(N(f))) + N(g) * nroot(N(h));
     // the same value: b sqrt(c + e sqrt f) = sqrt(b^2 c + b^2 e sqrt f) sign(b)
@@ -121,6 +125,25 @@ void nested_root_tests()
     ++compared;
   }
   std::printf("%d nested-root identities and signs\n", compared);
+}
+
+// Small_rational coefficients: a product that does not fit in 128 bits
+// throws, never gives a wrong value; the same in Gmpq is exact.
+void small_nested_root_overflow_tests()
+{
+  bool thrown = false;
+  try {
+    Small_nested_root_context context;
+    Small_nested_root_number x = sqrt(Small_nested_root_number(std::ldexp(1.0, 60))) + sqrt(Small_nested_root_number(3));
+    for(int i = 0; i < 4; ++i) x = x * x;
+  } catch(Small_rational_overflow&) {
+    thrown = true;
+  }
+  CHECK(thrown, "small nested: a product beyond 128 bits throws");
+  Nested_root_context context;
+  Nested_root_number y = sqrt(Nested_root_number(std::ldexp(1.0, 60))) + sqrt(Nested_root_number(3));
+  for(int i = 0; i < 4; ++i) y = y * y;
+  CHECK(y.sign() == CGAL::POSITIVE && y.to_double() > std::ldexp(1.0, 479), "nested: the same in Gmpq");
 }
 
 // Small_rational and the one-root numbers over it agree with Gmpq, and
@@ -315,7 +338,9 @@ int main()
 {
   mpfr_interval_tests();
   small_rational_tests();
-  nested_root_tests();
+  nested_root_tests<Nested_root_number, Nested_root_context>();
+  nested_root_tests<Small_nested_root_number, Small_nested_root_context>();
+  small_nested_root_overflow_tests();
   // squares of rationals stay rational
   CHECK(root(49).is_rational() && root(49) == One_root_rational(7), "sqrt(49) = 7");
   CHECK(sqrt(One_root_rational(Gmpq(9, 4))) == One_root_rational(Gmpq(3, 2)), "sqrt(9/4) = 3/2");

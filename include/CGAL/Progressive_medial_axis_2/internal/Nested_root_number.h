@@ -44,11 +44,33 @@
 // Division rationalises the denominator, one root at a time, by the
 // conjugate; should a conjugate vanish (dependent roots), the denominator
 // equals 2P and the division goes on with that.
+//
+// The rational type.  The coefficients are Small_rational (128 bits, on the
+// stack: Small_rational.h) or Gmpq: the types Small_nested_root_number and
+// Nested_root_number.  A Small_rational operation whose result does not fit
+// throws Small_rational_overflow, and the caller evaluates again in Gmpq (as
+// the one-root stage does).  The terms of a number live in a small vector
+// with room for four on the stack: the exact ties of degenerate input (the
+// integer circles of font outlines) spent a third of their time in malloc
+// and GMP for numbers of a few terms.
 
 #ifndef CGAL_PROGRESSIVE_MEDIAL_AXIS_2_INTERNAL_NESTED_ROOT_NUMBER_H
 #define CGAL_PROGRESSIVE_MEDIAL_AXIS_2_INTERNAL_NESTED_ROOT_NUMBER_H
 
 #include <CGAL/Progressive_medial_axis_2/internal/One_root_rational.h>
+#include <CGAL/Progressive_medial_axis_2/internal/Small_rational.h>
+
+// GCC 12 warns, wrongly, of a read beyond the inline storage when a
+// small_vector of trivially copyable elements is moved (GCC bug 108197,
+// boostorg/container issue 267; newer Boost versions do not warn).
+#if defined(__GNUC__) && !defined(__clang__) && __GNUC__ >= 12
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wstringop-overread"
+#endif
+#include <boost/container/small_vector.hpp>
+#if defined(__GNUC__) && !defined(__clang__) && __GNUC__ >= 12
+#pragma GCC diagnostic pop
+#endif
 
 #include <CGAL/Gmpq.h>
 #include <CGAL/Interval_nt.h>
@@ -73,13 +95,12 @@ typedef std::uint64_t Root_mask;
 
 /// A term of a nested-root number: a rational coefficient times the product
 /// of the roots whose bits are set in `mask`.
+template <class Q>
 struct Root_term {
   Root_mask mask;
-  Gmpq c;
+  Q c;
   friend bool operator==(const Root_term& a, const Root_term& b) { return a.mask == b.mask && a.c == b.c; }
 };
-
-typedef std::vector<Root_term> Root_polynomial;
 
 inline int highest_root(Root_mask m)
 {
@@ -87,23 +108,28 @@ inline int highest_root(Root_mask m)
   return 63 - __builtin_clzll(m);
 }
 
-/// The roots of one exact evaluation.  Creating a context makes it the
-/// current one of the thread until it is destroyed; nested-root numbers
-/// are valid only while their context lives.
-class Nested_root_context
+/// The roots of one exact evaluation, with coefficients of the rational
+/// type Q (Gmpq or Small_rational).  Creating a context makes it the
+/// current one of the thread (for its Q) until it is destroyed; nested-root
+/// numbers are valid only while their context lives.
+template <class Rational>
+class Basic_nested_root_context
 {
 public:
-  Nested_root_context() : previous_(current()) { current() = this; }
-  ~Nested_root_context() { current() = previous_; }
-  Nested_root_context(const Nested_root_context&) = delete;
-  Nested_root_context& operator=(const Nested_root_context&) = delete;
+  typedef Root_term<Rational> Term;
+  typedef boost::container::small_vector<Term, 4> Root_polynomial;
 
-  static Nested_root_context*& current()
+  Basic_nested_root_context() : previous_(current()) { current() = this; }
+  ~Basic_nested_root_context() { current() = previous_; }
+  Basic_nested_root_context(const Basic_nested_root_context&) = delete;
+  Basic_nested_root_context& operator=(const Basic_nested_root_context&) = delete;
+
+  static Basic_nested_root_context*& current()
   {
-    static thread_local Nested_root_context* c = nullptr;
+    static thread_local Basic_nested_root_context* c = nullptr;
     return c;
   }
-  static Nested_root_context& get()
+  static Basic_nested_root_context& get()
   {
     CGAL_precondition(current() != nullptr);
     return *current();
@@ -117,16 +143,16 @@ public:
   static void normalize(Root_polynomial& v)
   {
     if(v.size() < 2) {
-      if(v.size() == 1 && CGAL::sign(v[0].c) == ZERO) v.clear();
+      if(v.size() == 1 && q_sign(v[0].c) == ZERO) v.clear();
       return;
     }
-    std::sort(v.begin(), v.end(), [](const Root_term& a, const Root_term& b) { return a.mask < b.mask; });
+    std::sort(v.begin(), v.end(), [](const Term& a, const Term& b) { return a.mask < b.mask; });
     std::size_t out = 0;
     for(std::size_t i = 0; i < v.size();) {
-      Root_term t = v[i];
+      Term t = v[i];
       std::size_t j = i + 1;
       for(; j < v.size() && v[j].mask == t.mask; ++j) t.c += v[j].c;
-      if(CGAL::sign(t.c) != ZERO) v[out++] = t;
+      if(q_sign(t.c) != ZERO) v[out++] = t;
       i = j;
     }
     v.resize(out);
@@ -141,11 +167,11 @@ public:
       if(j == b.size() || (i < a.size() && a[i].mask < b[j].mask)) {
         r.push_back(a[i++]);
       } else if(i == a.size() || b[j].mask < a[i].mask) {
-        r.push_back(Root_term{b[j].mask, subtract ? -b[j].c : b[j].c});
+        r.push_back(Term{b[j].mask, subtract ? -b[j].c : b[j].c});
         ++j;
       } else {
-        Gmpq c = subtract ? a[i].c - b[j].c : a[i].c + b[j].c;
-        if(CGAL::sign(c) != ZERO) r.push_back(Root_term{a[i].mask, c});
+        Rational c = subtract ? a[i].c - b[j].c : a[i].c + b[j].c;
+        if(q_sign(c) != ZERO) r.push_back(Term{a[i].mask, c});
         ++i;
         ++j;
       }
@@ -158,27 +184,27 @@ public:
     Root_polynomial r;
     if(a.empty() || b.empty()) return r;
     r.reserve(a.size() * b.size());
-    for(const Root_term& x : a)
-      for(const Root_term& y : b) add_monomial_product(x.mask, y.mask, x.c * y.c, r);
+    for(const Term& x : a)
+      for(const Term& y : b) add_monomial_product(x.mask, y.mask, x.c * y.c, r);
     normalize(r);
     return r;
   }
 
-  static Root_polynomial scale(const Root_polynomial& a, const Gmpq& q)
+  static Root_polynomial scale(const Root_polynomial& a, const Rational& q)
   {
     Root_polynomial r;
-    if(CGAL::sign(q) == ZERO) return r;
+    if(q_sign(q) == ZERO) return r;
     r.reserve(a.size());
-    for(const Root_term& t : a) r.push_back(Root_term{t.mask, t.c * q});
+    for(const Term& t : a) r.push_back(Term{t.mask, t.c * q});
     return r;
   }
 
   static bool is_rational(const Root_polynomial& a) { return a.empty() || (a.size() == 1 && a[0].mask == 0); }
-  static Gmpq rational_value(const Root_polynomial& a) { return a.empty() ? Gmpq(0) : a[0].c; }
-  static Root_polynomial constant(const Gmpq& q)
+  static Rational rational_value(const Root_polynomial& a) { return a.empty() ? Rational(0) : a[0].c; }
+  static Root_polynomial constant(const Rational& q)
   {
     Root_polynomial r;
-    if(CGAL::sign(q) != ZERO) r.push_back(Root_term{0, q});
+    if(q_sign(q) != ZERO) r.push_back(Term{0, q});
     return r;
   }
 
@@ -187,10 +213,10 @@ public:
   {
     if(a.empty()) return ZERO;
     // every term of one sign (the roots are positive)
-    const Sign s0 = CGAL::sign(a[0].c);
+    const Sign s0 = q_sign(a[0].c);
     bool same = true;
-    for(const Root_term& t : a)
-      if(CGAL::sign(t.c) != s0) { same = false; break; }
+    for(const Term& t : a)
+      if(q_sign(t.c) != s0) { same = false; break; }
     if(same) return s0;
     {
       const Interval_nt<false> v = interval(a);
@@ -198,12 +224,12 @@ public:
       if(v.sup() < 0) return NEGATIVE;
     }
     Root_mask all = 0;
-    for(const Root_term& t : a) all |= t.mask;
+    for(const Term& t : a) all |= t.mask;
     const int k = highest_root(all);
     const Root_mask bit = Root_mask(1) << k;
     Root_polynomial P, Q;
-    for(const Root_term& t : a) {
-      if(t.mask & bit) Q.push_back(Root_term{t.mask & ~bit, t.c});
+    for(const Term& t : a) {
+      if(t.mask & bit) Q.push_back(Term{t.mask & ~bit, t.c});
       else P.push_back(t);
     }
     normalize(Q);   // removing the bit keeps the order, but be safe
@@ -220,8 +246,8 @@ public:
   {
     Protect_FPU_rounding<true> protection;
     Interval_nt<false> s(0);
-    for(const Root_term& t : a) {
-      Interval_nt<false> x(CGAL::to_interval(t.c));
+    for(const Term& t : a) {
+      Interval_nt<false> x(q_interval(t.c));
       for(Root_mask m = t.mask; m != 0; m &= m - 1) x *= roots_[__builtin_ctzll(m)].value;
       s += x;
     }
@@ -232,14 +258,14 @@ public:
   Root_polynomial divide(const Root_polynomial& a, const Root_polynomial& b) const
   {
     CGAL_precondition(!b.empty());
-    if(is_rational(b)) return scale(a, Gmpq(1) / b[0].c);
+    if(is_rational(b)) return scale(a, Rational(1) / b[0].c);
     Root_mask all = 0;
-    for(const Root_term& t : b) all |= t.mask;
+    for(const Term& t : b) all |= t.mask;
     const int k = highest_root(all);
     const Root_mask bit = Root_mask(1) << k;
     Root_polynomial P, Q;
-    for(const Root_term& t : b) {
-      if(t.mask & bit) Q.push_back(Root_term{t.mask & ~bit, t.c});
+    for(const Term& t : b) {
+      if(t.mask & bit) Q.push_back(Term{t.mask & ~bit, t.c});
       else P.push_back(t);
     }
     // b (P - Q s_k) = P^2 - Q^2 a_k, free of s_k
@@ -247,10 +273,10 @@ public:
     if(sign(norm) == ZERO) {
       // P = Q s_k (b != 0): b = 2P
       if(sign(b) == ZERO) throw std::domain_error("division by zero");
-      return divide(a, scale(P, Gmpq(2)));
+      return divide(a, scale(P, Rational(2)));
     }
     Root_polynomial conj = P;
-    for(const Root_term& t : Q) conj.push_back(Root_term{t.mask | bit, -t.c});
+    for(const Term& t : Q) conj.push_back(Term{t.mask | bit, -t.c});
     normalize(conj);
     return divide(multiply(a, conj), norm);
   }
@@ -262,17 +288,17 @@ public:
     if(s == NEGATIVE) throw std::domain_error("square root of a negative number");
     if(s == ZERO) return Root_polynomial();
     if(is_rational(a)) {
-      const Gmpq q = a[0].c;
-      Gmpq r;
+      const Rational q = a[0].c;
+      Rational r;
       if(rational_square_root(q, r)) return constant(r);
       // an existing root whose ratio to q is a rational square
       for(std::size_t j = 0; j < roots_.size(); ++j) {
         if(!roots_[j].rational) continue;
-        if(rational_square_root(q / roots_[j].q, r)) return Root_polynomial{Root_term{Root_mask(1) << j, r}};
+        if(rational_square_root(q / roots_[j].q, r)) return Root_polynomial{Term{Root_mask(1) << j, r}};
       }
     } else {
       for(std::size_t j = 0; j < roots_.size(); ++j)
-        if(!roots_[j].rational && roots_[j].radicand == a) return Root_polynomial{Root_term{Root_mask(1) << j, Gmpq(1)}};
+        if(!roots_[j].rational && roots_[j].radicand == a) return Root_polynomial{Term{Root_mask(1) << j, Rational(1)}};
     }
     if(roots_.size() >= 64) throw std::length_error("more than 64 square roots in one exact evaluation");
     Root root;
@@ -285,7 +311,7 @@ public:
       root.value = CGAL::sqrt(Interval_nt<false>((std::max)(0.0, v.inf()), (std::max)(0.0, v.sup())));
     }
     roots_.push_back(root);
-    return Root_polynomial{Root_term{Root_mask(1) << (roots_.size() - 1), Gmpq(1)}};
+    return Root_polynomial{Term{Root_mask(1) << (roots_.size() - 1), Rational(1)}};
   }
 
   /// The value as an MPFR number, rounded to nearest, at `precision` bits
@@ -308,18 +334,18 @@ private:
   struct Root {
     Root_polynomial radicand;
     bool rational = false;
-    Gmpq q;                       // the radicand, when rational
+    Rational q;                       // the radicand, when rational
     Interval_nt<false> value;     // the root, as a double interval
   };
 
   const Root_polynomial& radicand(int k) const { return roots_[k].radicand; }
 
   // Adds c x^a x^b to out (unnormalised), replacing s_k^2 by a_k.
-  void add_monomial_product(Root_mask a, Root_mask b, const Gmpq& c, Root_polynomial& out) const
+  void add_monomial_product(Root_mask a, Root_mask b, const Rational& c, Root_polynomial& out) const
   {
     const Root_mask common = a & b;
     if(common == 0) {
-      out.push_back(Root_term{a | b, c});
+      out.push_back(Term{a | b, c});
       return;
     }
     const int k = highest_root(common);
@@ -335,8 +361,8 @@ private:
     // roots of each product below are below k and the recursion ends
     Root_polynomial ab;
     add_monomial_product(a, b, c, ab);
-    for(const Root_term& s : ab)
-      for(const Root_term& t : r.radicand) add_monomial_product(s.mask, t.mask, s.c * t.c, out);
+    for(const Term& s : ab)
+      for(const Term& t : r.radicand) add_monomial_product(s.mask, t.mask, s.c * t.c, out);
   }
 
   static void evaluate(const Root_polynomial& a, const std::vector<mpfr_t>& roots, mpfr_prec_t precision, mpfr_t out)
@@ -344,26 +370,33 @@ private:
     mpfr_t term;
     mpfr_init2(term, precision);
     mpfr_set_zero(out, 1);
-    for(const Root_term& t : a) {
-      mpfr_set_q(term, t.c.mpq(), MPFR_RNDN);
+    for(const Term& t : a) {
+      mpfr_set_q(term, internal::to_gmpq(t.c).mpq(), MPFR_RNDN);
       for(Root_mask m = t.mask; m != 0; m &= m - 1) mpfr_mul(term, term, roots[__builtin_ctzll(m)], MPFR_RNDN);
       mpfr_add(out, out, term, MPFR_RNDN);
     }
     mpfr_clear(term);
   }
 
-  Nested_root_context* previous_;
+  Basic_nested_root_context* previous_;
   std::vector<Root> roots_;
 };
 
-/// A number in the current Nested_root_context.
-class Nested_root_number
+/// A number in the current Basic_nested_root_context<Q>.
+template <class Q>
+class Basic_nested_root_number
 {
+  typedef Basic_nested_root_context<Q> Nested_root_context;
+  typedef typename Nested_root_context::Root_polynomial Root_polynomial;
+  typedef Basic_nested_root_number Nested_root_number;
+
 public:
-  Nested_root_number() {}
-  Nested_root_number(int i) : p_(Nested_root_context::constant(Gmpq(i))) {}
-  Nested_root_number(double d) : p_(Nested_root_context::constant(Gmpq(d))) {}
-  explicit Nested_root_number(const Gmpq& q) : p_(Nested_root_context::constant(q)) {}
+  typedef Q Rational;
+
+  Basic_nested_root_number() {}
+  Basic_nested_root_number(int i) : p_(Nested_root_context::constant(Q(i))) {}
+  Basic_nested_root_number(double d) : p_(Nested_root_context::constant(Q(d))) {}
+  explicit Basic_nested_root_number(const Q& q) : p_(Nested_root_context::constant(q)) {}
 
   const Root_polynomial& polynomial() const { return p_; }
   bool is_rational() const { return Nested_root_context::is_rational(p_); }
@@ -372,7 +405,7 @@ public:
   /// An interval of doubles that contains the value.
   Interval_nt<false> to_interval() const
   {
-    if(is_rational()) return CGAL::to_interval(Nested_root_context::rational_value(p_));
+    if(is_rational()) return q_interval(Nested_root_context::rational_value(p_));
     const Interval_nt<false> coarse = Nested_root_context::get().interval(p_);
     if(coarse.sup() - coarse.inf() <= 4 * std::numeric_limits<double>::epsilon() * (std::max)(std::fabs(coarse.inf()), std::fabs(coarse.sup())))
       return coarse;
@@ -386,7 +419,7 @@ public:
   /// within the rounding of an approximation with at least 128 more bits).
   double to_double() const
   {
-    if(is_rational()) return CGAL::to_double(Nested_root_context::rational_value(p_));
+    if(is_rational()) return CGAL::to_double(internal::to_gmpq(Nested_root_context::rational_value(p_)));
     double previous = 0;
     bool first = true;
     for(mpfr_prec_t precision = 192;; precision *= 2) {
@@ -404,7 +437,7 @@ public:
     }
   }
 
-  Nested_root_number operator-() const { return from(Nested_root_context::scale(p_, Gmpq(-1))); }
+  Nested_root_number operator-() const { return from(Nested_root_context::scale(p_, Q(-1))); }
 
   friend Nested_root_number operator+(const Nested_root_number& a, const Nested_root_number& b)
   {
@@ -439,15 +472,17 @@ public:
   friend Nested_root_number sqrt(const Nested_root_number& a) { return from(Nested_root_context::get().square_root(a.p_)); }
 
 private:
-  static Nested_root_number from(Root_polynomial p)
-  {
-    Nested_root_number r;
-    r.p_ = std::move(p);
-    return r;
-  }
+  struct From {};
+  Basic_nested_root_number(From, Root_polynomial&& p) : p_(std::move(p)) {}
+  static Nested_root_number from(Root_polynomial&& p) { return Nested_root_number(From(), std::move(p)); }
 
   Root_polynomial p_;
 };
+
+typedef Basic_nested_root_context<Gmpq> Nested_root_context;
+typedef Basic_nested_root_number<Gmpq> Nested_root_number;
+typedef Basic_nested_root_context<Small_rational> Small_nested_root_context;
+typedef Basic_nested_root_number<Small_rational> Small_nested_root_number;
 
 } // namespace internal
 } // namespace Progressive_medial_axes
