@@ -109,8 +109,8 @@ inline int highest_root(Root_mask m)
 }
 
 /// The roots of one exact evaluation, with coefficients of the rational
-/// type Q (Gmpq or Small_rational).  Creating a context makes it the
-/// current one of the thread (for its Q) until it is destroyed; nested-root
+/// type Rational (Gmpq or Small_rational).  Creating a context makes it the
+/// current one of the thread (for its Rational) until it is destroyed; nested-root
 /// numbers are valid only while their context lives.
 template <class Rational>
 class Basic_nested_root_context
@@ -334,7 +334,7 @@ private:
   struct Root {
     Root_polynomial radicand;
     bool rational = false;
-    Rational q;                       // the radicand, when rational
+    Rational q;                   // the radicand, when rational
     Interval_nt<false> value;     // the root, as a double interval
   };
 
