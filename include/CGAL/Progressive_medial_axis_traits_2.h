@@ -597,9 +597,9 @@ private:
 /// The span, in bits, of the coordinates of sites: from the highest bit of
 /// the largest to the lowest set bit of any.  At most 24 bits (integers of a
 /// grid, short binary fractions), the one-root computations fit in
-/// Small_rational and the filtered traits try them before the MPFR
-/// intervals (what the double intervals could not decide is then almost
-/// always an exact tie); otherwise Small_rational almost surely overflows,
+/// Small_rational and the filtered traits try them, then the nested-root
+/// numbers, without the MPFR intervals (what the double intervals could not
+/// decide is then almost always an exact tie); otherwise Small_rational almost surely overflows,
 /// and the MPFR intervals, cheaper than GMP rationals, come first.
 struct Coordinate_span {
   int lowest = std::numeric_limits<int>::max(), highest = std::numeric_limits<int>::min();
@@ -1168,16 +1168,22 @@ private:
   // grids, symmetric shapes), which the one-root numbers decide when the
   // computation keeps their form, as it does with axis-parallel edges; MPFR
   // intervals decide the near-ties that are not ties.  With short
-  // coordinates (Coordinate_span) the one-root numbers come first, in
-  // Small_rational; otherwise they would need GMP rationals, and the MPFR
-  // intervals, cheaper, come first (on a Koch snowflake with decimal
-  // coordinates most of these decisions are near-ties, not ties).  On
-  // non-degenerate input the double intervals decide nearly everything, and
-  // a value outside the one-root form is found after a few operations.  A
-  // stage returns its result, or nothing when it cannot decide.
+  // coordinates (Coordinate_span) the one-root numbers run in
+  // Small_rational, and the MPFR stage is skipped: what the one-root
+  // numbers cannot take there is a tie of nested roots as a rule, which
+  // MPFR cannot decide, and the nested-root numbers, in Small_rational
+  // too, decide it at once (FreeMono's percent sign: 14% faster, every
+  // other shape of the degenerate benchmark as fast or faster; RESULTS.md,
+  // eighth session).  Otherwise the one-root numbers would need GMP
+  // rationals, and the MPFR intervals, cheaper, come first (on a Koch
+  // snowflake with decimal coordinates most of these decisions are
+  // near-ties, not ties).  On non-degenerate input the double intervals
+  // decide nearly everything, and a value outside the one-root form is
+  // found after a few operations.  A stage returns its result, or nothing
+  // when it cannot decide.
   template <class R, class Mpfr_stage, class One_root_stage>
   static std::optional<R> before_exact(const Mpfr_stage& mpfr_stage, const One_root_stage& one_root_stage,
-                                       bool one_root_first = true)
+                                       bool short_coordinates = true)
   {
     auto one_root = [&]() -> std::optional<R> {
       try {
@@ -1186,9 +1192,8 @@ private:
       }
       return std::nullopt;
     };
-    if(one_root_first)
-      if(std::optional<R> r = one_root())
-        return r;
+    if(short_coordinates)
+      return one_root();
     {
       Progressive_medial_axes::internal::Mpfr_precision_scope scope(mpfr_precision);
       try {
@@ -1197,9 +1202,7 @@ private:
       } catch(Uncertain_conversion_exception&) {
       }
     }
-    if(!one_root_first)
-      return one_root();
-    return std::nullopt;
+    return one_root();
   }
 
   template <class NT>

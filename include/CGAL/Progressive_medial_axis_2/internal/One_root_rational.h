@@ -10,8 +10,9 @@
 // Author(s)     : The Progressive_medial_axis_2 authors
 //
 // Exact numbers a + b sqrt(D), with a, b, D rational and D > 0: the stage of
-// the filtered traits after the double intervals, before the MPFR intervals
-// and the nested-root numbers (Nested_root_number.h).  The decisions that
+// the filtered traits after the double intervals (and after the MPFR
+// intervals, where the coordinates are not short), before the nested-root
+// numbers (Nested_root_number.h).  The decisions that
 // reach it are almost always exact ties (two equal event times, a zero
 // discriminant).  With axis-parallel input edges (mazes, CAD
 // parts) the tangent circles are rational and an event time adds at most one
