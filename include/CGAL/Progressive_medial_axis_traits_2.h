@@ -718,13 +718,16 @@ public:
       std::unique_ptr<One_root_value> v(new One_root_value);
       try {
         const Triple_relations rel = relations<CK>();
-        try {
-          if(!short_coordinates())
-            throw Small_rational_overflow();
-          To_nt_convert<Small_one_root> cv;
-          v->exists = evaluate_time<Small_one_root>(kind_, c_, s_, rel, cv, v->small_value.alpha, &v->small_value.rho);
-          v->small = true;
-        } catch(Small_rational_overflow&) {
+        if(short_coordinates()) {
+          try {
+            To_nt_convert<Small_one_root> cv;
+            v->exists = evaluate_time<Small_one_root>(kind_, c_, s_, rel, cv, v->small_value.alpha, &v->small_value.rho);
+            v->small = true;
+          } catch(Small_rational_overflow&) {
+            ++Filtered_model<CK>::filter_statistics().small_rational_overflows;
+          }
+        }
+        if(!v->small) {
           To_nt_convert<One_root_rational> cv;
           One_root_sqrt t;
           v->exists = evaluate_time<One_root_rational>(kind_, c_, s_, rel, cv, t.alpha, &t.rho);
@@ -819,6 +822,7 @@ public:
     std::size_t rational_comparisons = 0;      ///< ... decided in exact one-root numbers
     std::size_t exact_comparisons = 0;         ///< ... decided in nested-root numbers
     std::size_t exact_ties = 0;                ///< comparisons that found two times equal (one-root or nested)
+    std::size_t small_rational_overflows = 0;  ///< computations in 128-bit rationals redone in GMP rationals (a result overflowed)
 
     /// Adds the counts of `b - a` (what another thread counted between two readings).
     void add_difference(const Filter_statistics& b, const Filter_statistics& a)
@@ -832,6 +836,7 @@ public:
       rational_comparisons += b.rational_comparisons - a.rational_comparisons;
       exact_comparisons += b.exact_comparisons - a.exact_comparisons;
       exact_ties += b.exact_ties - a.exact_ties;
+      small_rational_overflows += b.small_rational_overflows - a.small_rational_overflows;
     }
   };
   static Filter_statistics& filter_statistics()
@@ -949,6 +954,7 @@ private:
           try {
             sign = sign_of_difference(ra->small_value, rb->small_value);
           } catch(Progressive_medial_axes::internal::Small_rational_overflow&) {
+            ++filter_statistics().small_rational_overflows;
           }
         }
         if(!sign)
@@ -1118,6 +1124,7 @@ private:
     try {
       return f(Progressive_medial_axes::internal::Small_one_root());
     } catch(Progressive_medial_axes::internal::Small_rational_overflow&) {
+      ++filter_statistics().small_rational_overflows;
       return f(Progressive_medial_axes::internal::One_root_rational());
     }
   }
@@ -1133,6 +1140,7 @@ private:
         Progressive_medial_axes::internal::Small_nested_root_context context;
         return f(Progressive_medial_axes::internal::Small_nested_root_number());
       } catch(Progressive_medial_axes::internal::Small_rational_overflow&) {
+        ++filter_statistics().small_rational_overflows;
       }
     }
     Progressive_medial_axes::internal::Nested_root_context context;

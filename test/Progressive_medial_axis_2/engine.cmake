@@ -8,6 +8,16 @@ add_test(NAME oracle_filtered COMMAND test_medial_axis_oracle --only regressions
 # Degenerate input (integer grids, Hilbert, Koch, regular polygons, glyphs):
 # every exact tie decided, against the oracle.
 add_test(NAME oracle_degenerate COMMAND test_medial_axis_oracle --only degenerate)
+# The fallbacks of the exact stages from 128-bit to GMP rationals inside real
+# merges (the one-root and nested-root numbers redone in Gmpq where a result
+# overflows): no test shape overflows 128 bits, so in this build the 128-bit
+# rationals overflow at 40 bits.
+add_executable(test_medial_axis_oracle_gmp_fallback test_medial_axis_oracle.cpp)
+target_link_libraries(test_medial_axis_oracle_gmp_fallback PRIVATE pma_tool)
+target_include_directories(test_medial_axis_oracle_gmp_fallback PRIVATE ${CMAKE_CURRENT_SOURCE_DIR}/include)
+target_compile_definitions(test_medial_axis_oracle_gmp_fallback PRIVATE PMA_TEST_DATA="${PMA_TEST_DATA}"
+                           CGAL_PMA2_SMALL_RATIONAL_TEST_BITS=40)
+add_test(NAME oracle_degenerate_gmp_fallback COMMAND test_medial_axis_oracle_gmp_fallback --only degenerate)
 # The double-precision model: its promise (the exact topology, merges with
 # uncertain decisions redone exactly) on the data and degenerate shapes too.
 add_test(NAME oracle_epick COMMAND test_medial_axis_oracle --traits epick --quick)
@@ -19,7 +29,7 @@ add_test(NAME oracle_boundary_shapes COMMAND test_medial_axis_oracle --driver bo
          --only regressions,data,degenerate,touching)
 add_test(NAME oracle_boundary_epick COMMAND test_medial_axis_oracle --driver boundary --traits epick --quick
          --only random,holes,touching)
-set_tests_properties(oracle_filtered oracle_degenerate oracle_epick oracle_exact oracle_boundary oracle_boundary_shapes
+set_tests_properties(oracle_filtered oracle_degenerate oracle_degenerate_gmp_fallback oracle_epick oracle_exact oracle_boundary oracle_boundary_shapes
                      oracle_boundary_epick PROPERTIES TIMEOUT 1800)
 
 # The command-line tool's contract, against the oracle program sdg_pairs

@@ -917,6 +917,20 @@ void regression_tests(Checker<Traits>& checker, const Options&)
   std::cout << "regressions: " << count << " shapes, every step\n";
 }
 
+// The counter of the exact-decision traits' computations in 128-bit
+// rationals that overflowed and were redone in GMP rationals (0 for other
+// traits).
+template <class Traits>
+auto small_rational_overflows(int) -> decltype(Traits::filter_statistics().small_rational_overflows)
+{
+  return Traits::filter_statistics().small_rational_overflows;
+}
+template <class Traits>
+std::size_t small_rational_overflows(long)
+{
+  return 0;
+}
+
 template <class Traits>
 int run_all(const Options& o)
 {
@@ -932,6 +946,16 @@ int run_all(const Options& o)
   if(wanted("degenerate")) degenerate_tests(checker, o);
   if(wanted("touching")) touching_tests(checker, o);
   if(wanted("union")) union_tests(checker, o);
+#ifdef CGAL_PMA2_SMALL_RATIONAL_TEST_BITS
+  // this build's 128-bit rationals overflow early (engine.cmake): the
+  // comparisons above tested the fallbacks to GMP rationals only if some ran
+  if(o.traits == "filtered") {
+    const std::size_t overflows = small_rational_overflows<Traits>(0);
+    std::cout << overflows << " computations in 128-bit rationals redone in GMP rationals (limit "
+              << CGAL_PMA2_SMALL_RATIONAL_TEST_BITS << " bits)\n";
+    CHECK(overflows > 0, "no computation in 128-bit rationals overflowed");
+  }
+#endif
   std::cout << checker.comparisons << " comparisons with the oracle, " << pma_test::failures() << " failures, "
             << std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() << " s\n";
   return pma_test::failures() == 0 ? 0 : 1;

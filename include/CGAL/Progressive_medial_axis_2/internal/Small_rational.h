@@ -162,17 +162,32 @@ private:
   // cycles; the numbers of grid coordinates mostly fit in 64 bits.
   static Int mul(Int a, Int b)
   {
-    if(fits_64(a) && fits_64(b)) return Int(std::int64_t(a)) * Int(std::int64_t(b));   // cannot overflow
+    if(fits_64(a) && fits_64(b)) return limited(Int(std::int64_t(a)) * Int(std::int64_t(b)));   // cannot overflow
     Int r;
     if(__builtin_mul_overflow(a, b, &r)) throw Small_rational_overflow();
-    return r;
+    return limited(r);
   }
   static Int add(Int a, Int b)
   {
     Int r;
     if(__builtin_add_overflow(a, b, &r)) throw Small_rational_overflow();
+    return limited(r);
+  }
+#ifdef CGAL_PMA2_SMALL_RATIONAL_TEST_BITS
+  // For the tests only: products and sums of CGAL_PMA2_SMALL_RATIONAL_TEST_BITS
+  // bits or more overflow, so that the fallbacks to GMP rationals run in the
+  // middle of real computations (no shape overflows 128 bits with short
+  // coordinates).
+  static Int limited(Int r)
+  {
+    static_assert(CGAL_PMA2_SMALL_RATIONAL_TEST_BITS > 0 && CGAL_PMA2_SMALL_RATIONAL_TEST_BITS < 127, "bits in (0, 127)");
+    const Int m = Int(1) << CGAL_PMA2_SMALL_RATIONAL_TEST_BITS;
+    if(r >= m || r <= -m) throw Small_rational_overflow();
     return r;
   }
+#else
+  static Int limited(Int r) { return r; }
+#endif
   // a / g for g > 0 dividing a
   static Int quotient(Int a, Int g)
   {
