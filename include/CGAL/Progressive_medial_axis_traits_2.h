@@ -599,8 +599,9 @@ private:
 /// grid, short binary fractions), the one-root computations fit in
 /// Small_rational and the filtered traits try them, then the nested-root
 /// numbers, without the MPFR intervals (what the double intervals could not
-/// decide is then almost always an exact tie); otherwise Small_rational almost surely overflows,
-/// and the MPFR intervals, cheaper than GMP rationals, come first.
+/// decide is then almost always an exact tie); otherwise Small_rational
+/// almost surely overflows, and the MPFR intervals, cheaper than GMP
+/// rationals, come first.
 struct Coordinate_span {
   int lowest = std::numeric_limits<int>::max(), highest = std::numeric_limits<int>::min();
 
@@ -1191,7 +1192,7 @@ private:
   // when it cannot decide.
   template <class R, class Mpfr_stage, class One_root_stage>
   static std::optional<R> before_exact(const Mpfr_stage& mpfr_stage, const One_root_stage& one_root_stage,
-                                       bool short_coordinates = true)
+                                       bool short_coordinates)
   {
     auto one_root = [&]() -> std::optional<R> {
       try {

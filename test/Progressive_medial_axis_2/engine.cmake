@@ -12,11 +12,8 @@ add_test(NAME oracle_degenerate COMMAND test_medial_axis_oracle --only degenerat
 # merges (the one-root and nested-root numbers redone in Gmpq where a result
 # overflows): no test shape overflows 128 bits, so in this build the 128-bit
 # rationals overflow at 40 bits.
-add_executable(test_medial_axis_oracle_gmp_fallback test_medial_axis_oracle.cpp)
-target_link_libraries(test_medial_axis_oracle_gmp_fallback PRIVATE pma_tool)
-target_include_directories(test_medial_axis_oracle_gmp_fallback PRIVATE ${CMAKE_CURRENT_SOURCE_DIR}/include)
-target_compile_definitions(test_medial_axis_oracle_gmp_fallback PRIVATE PMA_TEST_DATA="${PMA_TEST_DATA}"
-                           CGAL_PMA2_SMALL_RATIONAL_TEST_BITS=40)
+pma_add_test_program(test_medial_axis_oracle_gmp_fallback SOURCE test_medial_axis_oracle.cpp)
+target_compile_definitions(test_medial_axis_oracle_gmp_fallback PRIVATE CGAL_PMA2_SMALL_RATIONAL_TEST_BITS=40)
 add_test(NAME oracle_degenerate_gmp_fallback COMMAND test_medial_axis_oracle_gmp_fallback --only degenerate)
 # The double-precision model: its promise (the exact topology, merges with
 # uncertain decisions redone exactly) on the data and degenerate shapes too.
@@ -73,12 +70,10 @@ add_test(NAME pruning COMMAND test_pruning)
 # (test_api --threads), in a build of its own with -fsanitize=thread.
 option(PMA_SANITIZER_TESTS "Build and run the tests under sanitizers" ON)
 if(PMA_SANITIZER_TESTS AND CMAKE_CXX_COMPILER_ID MATCHES "GNU|Clang")
-  add_executable(test_api_tsan test_api.cpp)
-  target_link_libraries(test_api_tsan PRIVATE pma_tool)
-  target_include_directories(test_api_tsan PRIVATE ${CMAKE_CURRENT_SOURCE_DIR}/include)
+  pma_add_test_program(test_api_tsan SOURCE test_api.cpp)
   # the one-shot runs sequentially here: ThreadSanitizer cannot see the
   # synchronisation inside the (uninstrumented) libtbb
-  target_compile_definitions(test_api_tsan PRIVATE PMA_TEST_DATA="${PMA_TEST_DATA}" CGAL_PMA2_NO_TBB)
+  target_compile_definitions(test_api_tsan PRIVATE CGAL_PMA2_NO_TBB)
   target_compile_options(test_api_tsan PRIVATE -fsanitize=thread -O1 -g)
   target_link_options(test_api_tsan PRIVATE -fsanitize=thread)
   add_test(NAME api_threads_tsan COMMAND test_api_tsan --threads)
@@ -89,10 +84,7 @@ if(PMA_SANITIZER_TESTS AND CMAKE_CXX_COMPILER_ID MATCHES "GNU|Clang")
   # sanitized tool), the engine's drivers and the analysis (test_pruning).
   set(pma_asan_flags -fsanitize=address,undefined -fno-sanitize-recover=undefined -fno-omit-frame-pointer -O1 -g)
   foreach(name test_input test_pruning)
-    add_executable(${name}_asan ${name}.cpp)
-    target_link_libraries(${name}_asan PRIVATE pma_tool)
-    target_include_directories(${name}_asan PRIVATE ${CMAKE_CURRENT_SOURCE_DIR}/include)
-    target_compile_definitions(${name}_asan PRIVATE PMA_TEST_DATA="${PMA_TEST_DATA}")
+    pma_add_test_program(${name}_asan SOURCE ${name}.cpp)
   endforeach()
   pma_tool_executable(progressive_medial_axis_asan)
   foreach(target test_input_asan test_pruning_asan progressive_medial_axis_asan)
