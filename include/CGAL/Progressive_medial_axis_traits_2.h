@@ -124,6 +124,86 @@ Triple_relations triple_relations(const Site_ s[3])
   return rel;
 }
 
+/// Whether two triples are one disk wherever both have one, by their sites
+/// alone: they share two sites, one of them a segment F, and differ in a
+/// segment S of one and an endpoint P of S in the other, where F continues
+/// S on its line (P is a flat vertex), and the third site X is off that
+/// line.  Each construction then puts the centre on the common normal at P
+/// (a flat join for S and F, a point at the end of F for P), at the one
+/// distance where the disk touches X (Medial_constructions.h).  Two vertices
+/// of a straight border are the ends of an edge of length 0: on a quantized
+/// GIS outline the pair was the commonest tie of the exact stages.
+template <class K, class Site_>
+bool flat_vertex_swap(const Site_ s[3], const Site_ t[3])
+{
+  auto shared = [](const Site_& x, const Site_* u) { return x == u[0] || x == u[1] || x == u[2]; };
+  const Site_* us = nullptr;
+  const Site_* ut = nullptr;
+  for(int i = 0; i < 3; ++i) {
+    if(!shared(s[i], t)) {
+      if(us != nullptr) return false;
+      us = &s[i];
+    }
+    if(!shared(t[i], s)) {
+      if(ut != nullptr) return false;
+      ut = &t[i];
+    }
+  }
+  if(us == nullptr || ut == nullptr || us->is_point == ut->is_point) return false;
+  const Site_& S = us->is_point ? *ut : *us;
+  const Site_& P = us->is_point ? *us : *ut;
+  const Site_* other = us->is_point ? t : s;   // the triple with S
+  if(!(P.p == S.p || P.p == S.q)) return false;
+  Exact_orientation<K> orientation;
+  auto on_line = [&](const typename K::Point_2& x) { return orientation(S.p, S.q, x) == COLLINEAR; };
+  bool flat = false, clear = true;
+  for(int i = 0; i < 3; ++i) {
+    const Site_& x = other[i];
+    if(&x == &S) continue;
+    if(!x.is_point && ((x.p == P.p && S.q == P.p) || (x.q == P.p && S.p == P.p)) && on_line(x.p) && on_line(x.q))
+      flat = true;
+    else if(x.is_point ? on_line(x.p) : (x.p == P.p || x.q == P.p || (on_line(x.p) && on_line(x.q))))
+      clear = false;
+  }
+  return flat && clear;
+}
+
+/// Adds to `rel` the relations of the triple `s` that only ties need (see
+/// Triple_relations: segments in the same direction, points on the lines of
+/// segments, and with `separator`, the separator on the line of a segment),
+/// from exact predicates of `K`.  Returns whether it found one: a branch
+/// that the double intervals could not decide may then be decided.
+template <class K, class Site_>
+bool refine_relations(const Site_ s[3], const Site_* separator, Triple_relations& rel)
+{
+  typedef Exact_predicates_kernel_for<K> EK;
+  const typename EK::type k;
+  auto collinear = [&](const auto& a, const auto& b, const auto& c) {
+    return k.orientation_2_object()(EK::point(a), EK::point(b), EK::point(c)) == COLLINEAR;
+  };
+  bool found = false;
+  for(int i = 0; i < 3; ++i) {
+    if(s[i].is_point) continue;
+    for(int j = 0; j < 3; ++j) {
+      if(j == i) continue;
+      if(s[j].is_point) {
+        rel.point_on_line[j][i] = collinear(s[i].p, s[i].q, s[j].p);
+      } else if(j > i) {
+        // parallel (equal slopes), and the same signs of dx and dy
+        const typename EK::type::Segment_2 a(EK::point(s[i].p), EK::point(s[i].q)), b(EK::point(s[j].p), EK::point(s[j].q));
+        rel.same_direction[i][j] = rel.same_direction[j][i] =
+          k.compare_slope_2_object()(a, b) == EQUAL && CGAL::compare(s[i].p.x(), s[i].q.x()) == CGAL::compare(s[j].p.x(), s[j].q.x()) &&
+          CGAL::compare(s[i].p.y(), s[i].q.y()) == CGAL::compare(s[j].p.y(), s[j].q.y());
+        found = found || rel.same_direction[i][j];
+      }
+      found = found || (s[j].is_point && rel.point_on_line[j][i]);
+    }
+    if(separator != nullptr && collinear(separator->p, separator->q, s[i].p) && collinear(separator->p, separator->q, s[i].q))
+      rel.separator_on_line = found = true;
+  }
+  return found;
+}
+
 template <class NT, class Site_, class Convert>
 Site_nt<NT> site_nt(const Site_& s, const Convert& cv)
 {
@@ -185,12 +265,26 @@ enum Time_kind : unsigned char { TIME_ZERO, TIME_END, TIME_SWITCH, TIME_VANISH, 
 
 /// A vertex of the separator's cell whose disk passes through an endpoint of
 /// the separator (a reflex vertex there) lies on the normal at that endpoint:
-/// its switch time is known exactly.
-template <class Site_>
-Time_kind switch_time_kind(const Site_& line, const Site_& a, const Site_& b)
+/// its switch time is known exactly.  So does the vertex of the disk tangent
+/// to `c` (a side of the separator) at an end where a segment continues it
+/// on its line: for such a flat join the construction puts the centre on the
+/// normal there.  Common where a diagonal of the triangulation joins two
+/// vertices of a straight border (on a quantized GIS outline, these switch
+/// times tied with the end of the separator and went to MPFR one by one).
+/// `K` decides the collinearity exactly.
+template <class K, class Site_>
+Time_kind switch_time_kind(const Site_& line, const Site_& c, const Site_& a, const Site_& b)
 {
   if((a.is_point && a.p == line.p) || (b.is_point && b.p == line.p)) return TIME_ZERO;
   if((a.is_point && a.p == line.q) || (b.is_point && b.p == line.q)) return TIME_END;
+  if(!c.is_point) {
+    // (flat joins as triple_relations() finds them: c then a, or b then c)
+    const typename K::Point_2* z = nullptr;
+    if(!a.is_point && a.p == c.q && Exact_orientation<K>()(c.p, c.q, a.q) == COLLINEAR) z = &c.q;
+    else if(!b.is_point && b.q == c.p && Exact_orientation<K>()(b.p, b.q, c.q) == COLLINEAR) z = &c.p;
+    if(z != nullptr && *z == line.p) return TIME_ZERO;
+    if(z != nullptr && *z == line.q) return TIME_END;
+  }
   return TIME_SWITCH;
 }
 
@@ -253,8 +347,8 @@ bool evaluate_time(Time_kind kind, const Site_& c, const Site_* s, const Triple_
   if(!outcome(touches_segments(sn, rel, circle, tolerance)))
     return false;
   if(rad != nullptr)
-    return outcome(chord_far_end_parts(px, py, qx, qy, circle, t, *rad));
-  return outcome(chord_far_end(px, py, qx, qy, circle, t));
+    return outcome(chord_far_end_parts(px, py, qx, qy, circle, t, *rad, rel.separator_on_line));
+  return outcome(chord_far_end(px, py, qx, qy, circle, t, rel.separator_on_line));
 }
 
 struct Identity_convert {
@@ -346,7 +440,7 @@ public:
                     Event_time_2& t) const
     {
       Site_2 s[3] = {c, a, b};
-      return Model::time(switch_time_kind(line, a, b), line, s, t);
+      return Model::time(switch_time_kind<Kernel>(line, c, a, b), line, s, t);
     }
   };
 
@@ -862,7 +956,11 @@ private:
     }
     t.exact_.reset();
     ++filter_statistics().interval_evaluations;
-    {
+    // in double intervals; where they leave a branch undecided, again with
+    // the relations that decide exact ties (refine_relations())
+    for(int attempt = 0; attempt < 2; ++attempt) {
+      if(attempt == 1 && (s == nullptr || !Progressive_medial_axes::internal::refine_relations<CK>(t.s_, &line, rel)))
+        break;
       Protect_FPU_rounding<true> protection;
       try {
         Interval v;
@@ -1002,20 +1100,16 @@ private:
     ++filter_statistics().interval_evaluations;
     bool branches_decided = false;
     {
-      Protect_FPU_rounding<true> protection;
-      try {
-        Progressive_medial_axes::internal::Circle_nt<Interval> circle;
-        const int found = disk_nt_decided<Interval>(s, rel, circle);
-        if(found == 0)
-          return false;
-        branches_decided = found > 0;
-        if(branches_decided && circle.x.is_point() && circle.y.is_point() && circle.r.is_point() && std::isfinite(circle.x.inf()) &&
-           std::isfinite(circle.y.inf()) && std::isfinite(circle.r.inf())) {
-          centre = Point_2(circle.x.inf(), circle.y.inf());
-          radius = circle.r.inf();
-          return true;
-        }
-      } catch(Uncertain_conversion_exception&) {
+      Progressive_medial_axes::internal::Circle_nt<Interval> circle;
+      const int found = interval_disk(s, rel, circle);
+      if(found == 0)
+        return false;
+      branches_decided = found > 0;
+      if(branches_decided && circle.x.is_point() && circle.y.is_point() && circle.r.is_point() && std::isfinite(circle.x.inf()) &&
+         std::isfinite(circle.y.inf()) && std::isfinite(circle.r.inf())) {
+        centre = Point_2(circle.x.inf(), circle.y.inf());
+        radius = circle.r.inf();
+        return true;
       }
     }
     if(branches_decided) {
@@ -1077,22 +1171,21 @@ private:
   // stages of before_exact(), then nested-root numbers.
   static bool same_disk(const Site_2* s, const Site_2* t)
   {
-    const Progressive_medial_axes::internal::Triple_relations rs = Progressive_medial_axes::internal::triple_relations<CK>(s);
-    const Progressive_medial_axes::internal::Triple_relations rt = Progressive_medial_axes::internal::triple_relations<CK>(t);
+    Progressive_medial_axes::internal::Triple_relations rs = Progressive_medial_axes::internal::triple_relations<CK>(s);
+    Progressive_medial_axes::internal::Triple_relations rt = Progressive_medial_axes::internal::triple_relations<CK>(t);
     {
-      Protect_FPU_rounding<true> protection;
-      try {
-        Progressive_medial_axes::internal::Circle_nt<Interval> a, b;
-        const int found_a = disk_nt_decided<Interval>(s, rs, a);
-        if(found_a == 0)
+      Progressive_medial_axes::internal::Circle_nt<Interval> a, b;
+      const int found_a = interval_disk(s, rs, a);
+      if(found_a == 0)
+        return false;
+      const int found_b = interval_disk(t, rt, b);
+      if(found_b == 0)
+        return false;
+      if(found_a > 0 && found_b > 0) {
+        if(certainly(a.x != b.x) || certainly(a.y != b.y) || certainly(a.r != b.r))
           return false;
-        const int found_b = disk_nt_decided<Interval>(t, rt, b);
-        if(found_b == 0)
-          return false;
-        if(found_a > 0 && found_b > 0 &&
-           (certainly(a.x != b.x) || certainly(a.y != b.y) || certainly(a.r != b.r)))
-          return false;
-      } catch(Uncertain_conversion_exception&) {
+        if(Progressive_medial_axes::internal::flat_vertex_swap<CK>(s, t))
+          return true;
       }
     }
     auto equal = [&](auto number) {
@@ -1115,6 +1208,28 @@ private:
     if(decided)
       return *decided;
     return with_nested_numbers(short_coordinates(s, t), equal);
+  }
+
+  // The disk of the triple in double intervals: 1, 0 if there is none, -1
+  // where a branch of its construction is undecided, after a second try
+  // with the relations of exact ties (refine_relations()).  The exact
+  // predicates run outside the intervals' rounding mode (Epick's static
+  // filters assume rounding to nearest).
+  static int interval_disk(const Site_2* s, Progressive_medial_axes::internal::Triple_relations& rel,
+                           Progressive_medial_axes::internal::Circle_nt<Interval>& circle)
+  {
+    for(int attempt = 0; attempt < 2; ++attempt) {
+      if(attempt == 1 && !Progressive_medial_axes::internal::refine_relations<CK>(s, static_cast<const Site_2*>(nullptr), rel))
+        break;
+      Protect_FPU_rounding<true> protection;
+      try {
+        const int found = disk_nt_decided<Interval>(s, rel, circle);
+        if(found >= 0)
+          return found;
+      } catch(Uncertain_conversion_exception&) {
+      }
+    }
+    return -1;
   }
 
   // f(number) with the small one-root numbers, or with the GMP ones where

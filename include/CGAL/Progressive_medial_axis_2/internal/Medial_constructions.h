@@ -133,6 +133,21 @@ struct Triple_relations {
   bool same[3][3] = {};
   // exact sign of the orientation of three point sites (PPP only)
   int ppp_orientation = 0;
+  // The relations below are looked for only where the double intervals
+  // could not decide a branch (refine_relations() in the traits): each is an
+  // exact tie of that branch, common where many vertices lie on a few lines
+  // (straight borders of quantized GIS data, grids).
+  // segments i and j lie on parallel lines in the same direction (their
+  // interior normals are equal: no disk is tangent to both at a finite
+  // point of the normal of one)
+  bool same_direction[3][3] = {};
+  // point site i lies on the line of segment site j: the disks through it
+  // tangent to that line are tangent there, a double root
+  bool point_on_line[3][3] = {};
+  // the separator of an event time lies on the line of a segment site of
+  // the triple: the disk, tangent to that line, touches the separator's
+  // line at one point
+  bool separator_on_line = false;
 };
 
 /// A circle: centre and radius.
@@ -336,7 +351,7 @@ int circle_ppp(const Site_nt<NT>& p, const Site_nt<NT>& q, const Site_nt<NT>& s,
 /// side, with p, q, s in counter-clockwise order around the centre.
 template <class NT>
 int circle_pps(const Site_nt<NT>& p, const Site_nt<NT>& q, const Site_nt<NT>& s,
-               Circle_nt<NT>& c)
+               Circle_nt<NT>& c, bool double_root = false)
 {
   Line_nt<NT> l = oriented_line(s);
   // local frame at p
@@ -351,12 +366,15 @@ int circle_pps(const Site_nt<NT>& p, const Site_nt<NT>& q, const Site_nt<NT>& s,
   NT M = nq * nq;
   NT hs = h * sp;
   NT D = hs * hs + M * (h * h - a2);
-  const int no_root = decided(D < 0);
+  // (a double root: p or q on the line, the disk tangent there; D is 0)
+  const int no_root = double_root ? 0 : decided(D < 0);
   if(no_root != 0)
     return no_root < 0 ? -1 : 0;
-  NT sd = nt_sqrt_nonnegative(D);
+  NT sd = double_root ? NT(0) : nt_sqrt_nonnegative(D);
   NT lambda;
-  const int hs_nonnegative = decided(hs >= 0);
+  // (a double root is hs / M whatever the sign of hs: D = 0 makes the two
+  // forms below equal)
+  const int hs_nonnegative = double_root ? 1 : decided(hs >= 0);
   if(hs_nonnegative < 0)
     return -1;
   if(hs_nonnegative) {
@@ -513,7 +531,7 @@ int medial_circle_decided(const Site_nt<NT> s[3], const Triple_relations& rel, C
       Line_nt<NT> l = oriented_line(s[k]);
       return tangent_at_point_and_point(s[iq].ax, s[iq].ay, l, s[ip].ax, s[ip].ay, c);
     }
-    return circle_pps(s[ip], s[iq], s[k], c);
+    return circle_pps(s[ip], s[iq], s[k], c, rel.point_on_line[ip][k] || rel.point_on_line[iq][k]);
   }
   if(np == 1) {
     int ip = s[0].is_point ? 0 : (s[1].is_point ? 1 : 2);
@@ -522,11 +540,17 @@ int medial_circle_decided(const Site_nt<NT> s[3], const Triple_relations& rel, C
       return 0;
     if(rel.point_is_source[ip][i1] && rel.point_is_target[ip][i2])
       return 0;
+    // (the refined relations: exact ties where the disk does not exist,
+    // see Triple_relations)
     if(rel.point_is_source[ip][i1]) {
+      if(rel.same_direction[i1][i2] || rel.point_on_line[ip][i2])   // (no turn, or a disk of radius 0)
+        return 0;
       Line_nt<NT> l1 = oriented_line(s[i1]), l2 = oriented_line(s[i2]);
       return tangent_at_point_and_line(s[ip].ax, s[ip].ay, l1, l2, c);
     }
     if(rel.point_is_target[ip][i2]) {
+      if(rel.same_direction[i1][i2] || rel.point_on_line[ip][i1])
+        return 0;
       Line_nt<NT> l1 = oriented_line(s[i1]), l2 = oriented_line(s[i2]);
       return tangent_at_point_and_line(s[ip].ax, s[ip].ay, l2, l1, c);
     }
@@ -536,6 +560,12 @@ int medial_circle_decided(const Site_nt<NT> s[3], const Triple_relations& rel, C
       Line_nt<NT> l = oriented_line(s[i1]);
       return tangent_at_point_and_point(s[i1].bx, s[i1].by, l, s[ip].ax, s[ip].ay, c);
     }
+    // p on the line of s1 (or s2): the disk touches that line at p, a double
+    // root, and p, s1, s2 are not in counter-clockwise order around it (the
+    // centre is p plus r times s1's normal); parallel segments in the same
+    // direction: no disk
+    if(rel.point_on_line[ip][i1] || rel.point_on_line[ip][i2] || rel.same_direction[i1][i2])
+      return 0;
     return circle_pss(s[ip], s[i1], s[i2], c);
   }
   // SSS
@@ -544,10 +574,15 @@ int medial_circle_decided(const Site_nt<NT> s[3], const Triple_relations& rel, C
     if(rel.flat_join[j][i])
       return 0;
     if(rel.flat_join[i][j]) {
+      if(rel.same_direction[i][k])
+        return 0;
       Line_nt<NT> l = oriented_line(s[i]), m = oriented_line(s[k]);
       return tangent_at_point_and_line(s[i].bx, s[i].by, l, m, c);
     }
   }
+  // two segments in the same direction: two equal normals, no disk
+  if(rel.same_direction[0][1] || rel.same_direction[1][2] || rel.same_direction[2][0])
+    return 0;
   return circle_sss(s[0], s[1], s[2], c);
 }
 
@@ -592,17 +627,19 @@ int touches_segments(const Site_nt<NT> s[3], const Triple_relations& rel, const 
 /// scaled by |PQ|^2 (0 at P, |PQ|^2 at Q), as `alpha + sqrt(rad)`.  1 if
 /// found, 0 if the circle misses the line, -1 if the number type cannot
 /// decide which (see `decided()`).
+/// With `tangent`, the circle is known to touch the line at one point
+/// (rad is 0).
 template <class NT>
 int chord_far_end_parts(const NT& px, const NT& py, const NT& qx, const NT& qy,
-                        const Circle_nt<NT>& c, NT& alpha, NT& rad)
+                        const Circle_nt<NT>& c, NT& alpha, NT& rad, bool tangent = false)
 {
   NT dx = qx - px, dy = qy - py;
   NT vx = c.x - px, vy = c.y - py;
   NT d2 = dx * dx + dy * dy;
   NT h = cross2(dx, dy, vx, vy);
   NT r2d2 = c.r * c.r * d2;
-  rad = r2d2 - h * h;
-  const int misses = decided(rad < 0);
+  rad = tangent ? NT(0) : NT(r2d2 - h * h);
+  const int misses = tangent ? 0 : decided(rad < 0);
   if(misses < 0) return -1;
   if(misses) {
     // With floating-point numbers, a circle through an endpoint of the
@@ -619,10 +656,10 @@ int chord_far_end_parts(const NT& px, const NT& py, const NT& qx, const NT& qy,
 /// The same position as one number.
 template <class NT>
 int chord_far_end(const NT& px, const NT& py, const NT& qx, const NT& qy,
-                  const Circle_nt<NT>& c, NT& t)
+                  const Circle_nt<NT>& c, NT& t, bool tangent = false)
 {
   NT alpha, rad;
-  const int found = chord_far_end_parts(px, py, qx, qy, c, alpha, rad);
+  const int found = chord_far_end_parts(px, py, qx, qy, c, alpha, rad, tangent);
   if(found <= 0)
     return found;
   t = alpha + nt_sqrt_nonnegative(rad);
