@@ -170,17 +170,16 @@ bool flat_vertex_swap(const Site_ s[3], const Site_ t[3])
 
 /// Adds to `rel` the relations of the triple `s` that only ties need (see
 /// Triple_relations: segments in the same direction, points on the lines of
-/// segments, and with `separator`, the separator on the line of a segment),
+/// segments, and with `separator` (of a vanishing time: only its chord
+/// reads it), the separator on the line of a segment),
 /// from exact predicates of `K`.  Returns whether it found one: a branch
 /// that the double intervals could not decide may then be decided.
 template <class K, class Site_>
 bool refine_relations(const Site_ s[3], const Site_* separator, Triple_relations& rel)
 {
   typedef Exact_predicates_kernel_for<K> EK;
-  const typename EK::type k;
-  auto collinear = [&](const auto& a, const auto& b, const auto& c) {
-    return k.orientation_2_object()(EK::point(a), EK::point(b), EK::point(c)) == COLLINEAR;
-  };
+  Exact_orientation<K> orientation;
+  auto collinear = [&](const auto& a, const auto& b, const auto& c) { return orientation(a, b, c) == COLLINEAR; };
   bool found = false;
   for(int i = 0; i < 3; ++i) {
     if(s[i].is_point) continue;
@@ -188,15 +187,15 @@ bool refine_relations(const Site_ s[3], const Site_* separator, Triple_relations
       if(j == i) continue;
       if(s[j].is_point) {
         rel.point_on_line[j][i] = collinear(s[i].p, s[i].q, s[j].p);
+        found = found || rel.point_on_line[j][i];
       } else if(j > i) {
         // parallel (equal slopes), and the same signs of dx and dy
         const typename EK::type::Segment_2 a(EK::point(s[i].p), EK::point(s[i].q)), b(EK::point(s[j].p), EK::point(s[j].q));
         rel.same_direction[i][j] = rel.same_direction[j][i] =
-          k.compare_slope_2_object()(a, b) == EQUAL && CGAL::compare(s[i].p.x(), s[i].q.x()) == CGAL::compare(s[j].p.x(), s[j].q.x()) &&
+          typename EK::type().compare_slope_2_object()(a, b) == EQUAL && CGAL::compare(s[i].p.x(), s[i].q.x()) == CGAL::compare(s[j].p.x(), s[j].q.x()) &&
           CGAL::compare(s[i].p.y(), s[i].q.y()) == CGAL::compare(s[j].p.y(), s[j].q.y());
         found = found || rel.same_direction[i][j];
       }
-      found = found || (s[j].is_point && rel.point_on_line[j][i]);
     }
     if(separator != nullptr && collinear(separator->p, separator->q, s[i].p) && collinear(separator->p, separator->q, s[i].q))
       rel.separator_on_line = found = true;
@@ -959,7 +958,8 @@ private:
     // in double intervals; where they leave a branch undecided, again with
     // the relations that decide exact ties (refine_relations())
     for(int attempt = 0; attempt < 2; ++attempt) {
-      if(attempt == 1 && (s == nullptr || !Progressive_medial_axes::internal::refine_relations<CK>(t.s_, &line, rel)))
+      if(attempt == 1 && (s == nullptr || !Progressive_medial_axes::internal::refine_relations<CK>(
+                                               t.s_, kind == Progressive_medial_axes::internal::TIME_VANISH ? &line : nullptr, rel)))
         break;
       Protect_FPU_rounding<true> protection;
       try {
