@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Installs the Debian packages the package needs, if they are missing.
 set -euo pipefail
-packages="g++ cmake make libcgal-dev libcgal-qt5-dev libboost-dev libgmp-dev libmpfr-dev libtbb-dev nlohmann-json3-dev libgeos-dev clang doxygen chromium python3-pil"
+packages="g++ cmake make libcgal-dev libcgal-qt5-dev libboost-dev libgmp-dev libmpfr-dev libtbb-dev nlohmann-json3-dev libsimdjson-dev libgeos-dev clang doxygen chromium python3-pil"
 missing=""
 for p in $packages; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing="$missing $p"

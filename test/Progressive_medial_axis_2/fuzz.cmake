@@ -10,13 +10,22 @@ find_program(PMA_CLANGXX NAMES clang++ clang++-14)
 option(PMA_FUZZ_TESTS "Build the fuzzers with clang and run them briefly as tests" ON)
 set(PMA_FUZZ_SECONDS 60 CACHE STRING "How long each fuzzer runs as a test")
 if(PMA_FUZZ_TESTS AND PMA_CLANGXX)
+  # the tool's fast GeoJSON reader, where simdjson is found (fuzz_readers
+  # compares it with the nlohmann-json one)
+  set(pma_fuzz_simdjson_flags)
+  set(pma_fuzz_simdjson_libs)
+  if(TARGET simdjson::simdjson)
+    set(pma_fuzz_simdjson_flags -DPMA_TOOL_WITH_SIMDJSON)
+    set(pma_fuzz_simdjson_libs -lsimdjson)
+  endif()
   foreach(fuzzer fuzz_readers fuzz_engine)
     set(src ${CMAKE_CURRENT_SOURCE_DIR}/fuzz/${fuzzer}.cpp)
     add_custom_command(
       OUTPUT ${CMAKE_CURRENT_BINARY_DIR}/${fuzzer}
       COMMAND ${PMA_CLANGXX} -std=c++17 -g -O1 -fsanitize=fuzzer,address,undefined -fno-sanitize-recover=undefined
-              -DCGAL_PMA2_NO_TBB -I${PROJECT_SOURCE_DIR}/include -I${PROJECT_SOURCE_DIR}/tool/Progressive_medial_axis_2/include
-              ${src} -o ${CMAKE_CURRENT_BINARY_DIR}/${fuzzer} -lgmp -lmpfr
+              -DCGAL_PMA2_NO_TBB ${pma_fuzz_simdjson_flags} -I${PROJECT_SOURCE_DIR}/include
+              -I${PROJECT_SOURCE_DIR}/tool/Progressive_medial_axis_2/include -I${CMAKE_CURRENT_SOURCE_DIR}/include
+              ${src} -o ${CMAKE_CURRENT_BINARY_DIR}/${fuzzer} -lgmp -lmpfr ${pma_fuzz_simdjson_libs}
       DEPENDS ${src}
       IMPLICIT_DEPENDS CXX ${src}
       COMMENT "Building the fuzzer ${fuzzer} with clang")

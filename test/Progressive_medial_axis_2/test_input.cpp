@@ -14,6 +14,7 @@
 #include <CGAL/Progressive_medial_axis_2/internal/Curve_evolution.h>
 
 #include <pma_test/check.h>
+#include <pma_test/geojson_readers.h>
 
 #include <chrono>
 #include <clocale>
@@ -100,8 +101,22 @@ Rings read_wkt(const std::string& text)
   return pma_tool::read_wkt_polygon<Point>(in);
 }
 
+// how many texts the fast GeoJSON reader read (where simdjson is built in)
+long fast_geojson_reads = 0;
+
+// Compares the tool's two GeoJSON readers on `text` (pma_test/geojson_readers.h).
+void check_geojson_readers(const std::string& text)
+{
+  bool fast_read = false;
+  const std::string difference = pma_test::geojson_readers_differ<Point>(text, fast_read);
+  CHECK(difference.empty(), difference << " on " << text);
+  if(fast_read)
+    ++fast_geojson_reads;
+}
+
 Rings read_geojson(const std::string& text)
 {
+  check_geojson_readers(text);
   std::istringstream in(text);
   return pma_tool::read_geojson_polygon<Point>(in);
 }
@@ -323,6 +338,24 @@ int test_geojson_reading()
     REQUIRE(same_rings(read_geojson(text), ring));
   }
 
+  // The fast reader (simdjson) and the nlohmann-json one: numbers and properties as
+  // nlohmann-json reads them (-0 an integer, -0.0 a double; a repeated name in the
+  // properties keeps its first place and its last value); input the fast reader
+  // leaves to the other (a repeated member, an integer beyond 64 bits) read as before.
+  const long fast_before = fast_geojson_reads;
+  r = read_geojson(R"({"type": "Feature", "properties": {"n": -0, "m": -0.0, "f": 1.0, "e": 1e2, "u": 18446744073709551615,
+                       "i": -9223372036854775808, "s": "\u00e9\n\"", "d": 1, "x": [true, null, {}], "d": [2.5e-3]},
+                       "geometry": {"type": "Polygon", "coordinates": [[[-0, -0.0], [1, 0], [1, 1], [-0, -0.0]]]}})");
+  REQUIRE(r.size() == 1 && same_double(r[0][0].x(), 0.0) && same_double(r[0][0].y(), -0.0));
+  r = read_geojson(R"({"type": "Polygon", "type": "LineString", "type": "Polygon", "coordinates": [[[0, 0], [1, 0], [1, 1], [0, 0]]]})");
+  REQUIRE(r.size() == 1 && r[0].size() == 3);
+  r = read_geojson(R"({"type": "Polygon", "coordinates": [[[0, 0], [18446744073709551616, 0], [1, 1], [0, 0]]]})");
+  REQUIRE(r.size() == 1 && r[0][1] == Point(18446744073709551616.0, 0));
+#ifdef PMA_TOOL_WITH_SIMDJSON
+  // the fast reader read the first and left the two others (and reads those before)
+  REQUIRE(fast_geojson_reads == fast_before + 1 && fast_before == 7, fast_before << " " << fast_geojson_reads);
+#endif
+
   // Errors (the JSON syntax is nlohmann-json's, with its line and column).
   CHECK_INPUT_ERROR(read_geojson(R"({"type": "Polygon", "coordinates": [[[0, 0], [1, 0] [1, 1], [0, 0]]]})"),
                     "malformed JSON at line 1, column 53: syntax error", -1, -1);
@@ -378,6 +411,7 @@ int test_multi_reading()
     return pma_tool::read_wkt_polygons<Point>(in);
   };
   auto geojson = [](const std::string& text) {
+    check_geojson_readers(text);
     std::istringstream in(text);
     return pma_tool::read_geojson_polygons<Point>(in);
   };
