@@ -564,6 +564,14 @@ void repair(const std::string& data)
     CHECK(r.status == 0 && slurp(tmp + "/dropped.wkt") == c[1] + "\n",
           c[0] << " --repair: " << r.err << slurp(tmp + "/dropped.wkt"));
   }
+  // a one-shot run repairs each polygon in the task that computes it, a
+  // progressive one repairs first: the same polygon, the same axis
+  for(const char* f : {"spike.wkt", "overlap.wkt", "hole_in_hole.wkt", "spike_hole.wkt"}) {
+    Result one = run(tool + " --repair --pairs " + data + "/invalid/" + f);
+    Result progressive = run(tool + " --repair --progressive region --pairs " + data + "/invalid/" + f);
+    CHECK(one.status == 0 && progressive.status == 0 && one.out == progressive.out && one.out.find("pair ") == 0,
+          f << " --repair: one-shot and progressive differ: " << one.err << progressive.err);
+  }
   Result empty = run(tool + " --repair " + data + "/invalid/outer_inside_hole.wkt");
   CHECK(empty.status == 2 && empty.err.find("no polygon of positive area is left") != std::string::npos,
         "outer_inside_hole.wkt --repair: " << empty.err);

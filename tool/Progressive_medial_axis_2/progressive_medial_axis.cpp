@@ -530,21 +530,98 @@ int run(const Options& o)
   const bool boundary = o.progressive == "boundary";
   // A plain one-shot (no progressive option, --union or --repair) checks
   // each polygon in CGAL::medial_axis_2(), while another thread triangulates
-  // its points, and reports an invalid one once all are done.  Otherwise
-  // every polygon is checked before any is computed: an invalid one stops
-  // the run at once, or is repaired with --repair.
+  // its points, and reports an invalid one once all are done; with --repair
+  // it checks and repairs each polygon in the task that computes it (below).
+  // Otherwise every polygon is checked before any is computed: an invalid
+  // one stops the run at once, or is repaired with --repair.
   const bool check_in_one_shot = !progressive && o.union_with.empty() && !o.repair;
 #ifdef CGAL_LINKED_WITH_TBB
   on_this_thread = check_in_one_shot && input.size() == 1 && small_file && threads == tbb::info::default_concurrency();
 #endif
   std::vector<std::string> errors(input.size());
   std::vector<double> validation_seconds(input.size(), 0);
-  if(!check_in_one_shot)
+  // With --repair, a one-shot run checks, repairs and computes each polygon in
+  // one task, so that the repair of a large polygon runs while the other
+  // polygons are computed; the polygons after repair are numbered once all
+  // are done.
+  const bool repair_in_tasks = o.repair && !progressive;
+  typedef CGAL::Progressive_medial_axes::internal::Thread_counters<Traits> Counters;
+  Counters counters;   // the filter counters of the other threads
+  std::mutex counters_mutex;
+  const std::thread::id caller = std::this_thread::get_id();
+  // the one-shot axis of `rings` and its statistics (the filter counters of
+  // every thread counted)
+  auto one_shot = [&](const auto& rings, CGAL::Medial_axis_input_check checking, Medial_axis& axis,
+                      CGAL::Progressive_medial_axis_statistics& stats) {
+    counters.run_counted(caller, counters_mutex, [&]() { axis = CGAL::medial_axis_2(rings, Traits(), checking, &stats); });
+  };
+  if(!check_in_one_shot && !repair_in_tasks)
     in_arena([&]() {
       for_each_polygon(largest_first(input), [&](std::size_t k) { validation_seconds[k] = validate(input[k].rings, errors[k]); });
     });
   Repair_counts repairs;
-  if(o.repair) {
+  // with repair_in_tasks: the axes of the polygons after repair, in order
+  std::vector<Medial_axis> repaired_axes;
+  std::vector<CGAL::Progressive_medial_axis_statistics> repaired_stats;
+  if(repair_in_tasks) {
+    typedef pma_tool::Input_polygon<CGAL::Epick::Point_2> Polygon;
+    // for each input polygon, its polygons after repair (itself if it is
+    // valid), their axes and statistics
+    struct Part {
+      Polygon polygon;
+      Medial_axis axis;
+      CGAL::Progressive_medial_axis_statistics stats;
+    };
+    std::vector<std::vector<Part> > parts(input.size());
+    std::vector<std::string> repair_errors(input.size());
+    std::vector<double> repair_seconds(input.size(), 0);
+    Progress progress(input.size());
+    in_arena([&]() {
+      for_each_polygon(largest_first(input), [&](std::size_t k) {
+        validation_seconds[k] = validate(input[k].rings, errors[k]);
+        if(errors[k].empty()) {
+          parts[k].resize(1);
+          parts[k][0].polygon = std::move(input[k]);
+        } else {
+          const auto tr = std::chrono::steady_clock::now();
+          try {
+            for(auto& r : pma_tool::repair_polygon(input[k].rings)) {
+              validate(r, repair_errors[k]);
+              if(!repair_errors[k].empty()) break;
+              parts[k].emplace_back();
+              parts[k].back().polygon = Polygon{std::move(r), input[k].properties};
+            }
+          } catch(const CGAL::Progressive_medial_axes::Input_error& e) {
+            repair_errors[k] = e.what();
+          }
+          repair_seconds[k] = std::chrono::duration<double>(std::chrono::steady_clock::now() - tr).count();
+          if(!repair_errors[k].empty()) return;
+        }
+        for(Part& part : parts[k]) one_shot(part.polygon.rings, CGAL::TRUST_INPUT, part.axis, part.stats);
+        if(errors[k].empty()) parts[k][0].stats.validation_seconds = validation_seconds[k];
+        progress.done_one();
+      });
+    });
+    if constexpr(!std::is_empty<Counters>::value) counters.gather();
+    if(report(repair_errors, "after repair: ")) return 2;
+    std::vector<Polygon> out;
+    for(std::size_t k = 0; k < input.size(); ++k) {
+      if(!errors[k].empty()) repairs.count(errors[k]);
+      repairs.seconds += repair_seconds[k];
+      for(Part& part : parts[k]) {
+        out.push_back(std::move(part.polygon));
+        repaired_axes.push_back(std::move(part.axis));
+        repaired_stats.push_back(part.stats);
+      }
+    }
+    if(out.empty()) {
+      std::cerr << o.input << ": after repair: no polygon of positive area is left\n";
+      return 2;
+    }
+    input = std::move(out);
+    validation_seconds.assign(input.size(), 0);
+    repairs.output_polygons = input.size();
+  } else if(o.repair) {
     const auto tr = std::chrono::steady_clock::now();
     std::vector<std::vector<CGAL::Progressive_medial_axes::Rings<CGAL::Epick::Point_2> > > repaired(input.size());
     std::vector<std::string> repair_errors(input.size());
@@ -587,15 +664,15 @@ int run(const Options& o)
     validation_seconds = std::move(seconds);
     repairs.output_polygons = input.size();
     repairs.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - tr).count();
-    if(!o.repaired_out.empty()) {
-      std::ofstream f = open_out(o.repaired_out);
-      std::vector<CGAL::Progressive_medial_axes::Rings<CGAL::Epick::Point_2> > polygons;
-      for(const auto& p : input) polygons.push_back(p.rings);
-      pma_tool::write_wkt_polygons(f, polygons);
-      f << "\n";
-    }
   } else if(report(errors, "")) {
     return 2;
+  }
+  if(!o.repaired_out.empty()) {
+    std::ofstream f = open_out(o.repaired_out);
+    std::vector<CGAL::Progressive_medial_axes::Rings<CGAL::Epick::Point_2> > polygons;
+    for(const auto& p : input) polygons.push_back(p.rings);
+    pma_tool::write_wkt_polygons(f, polygons);
+    f << "\n";
   }
 
   const bool multi = input.size() > 1;
@@ -631,28 +708,29 @@ int run(const Options& o)
     job.stats.vanishings += union_stats.vanishings;
     job.stats.validation_seconds = 0;   // (counted in time_read with the reading)
     job.ma = &job.one_shot;
+  } else if(repair_in_tasks) {
+    // (computed with the repairs)
+    for(std::size_t k = 0; k < jobs.size(); ++k) {
+      jobs[k].one_shot = std::move(repaired_axes[k]);
+      jobs[k].stats = repaired_stats[k];
+      jobs[k].ma = &jobs[k].one_shot;
+    }
   } else if(!progressive) {
     // the one-shot divide and conquer of every polygon (in parallel over the
     // polygons, largest first, and within each), then what the options ask
-    typedef CGAL::Progressive_medial_axes::internal::Thread_counters<Traits> Counters;
-    Counters counters;
-    std::mutex mutex;
-    const std::thread::id caller = std::this_thread::get_id();
     Progress progress(jobs.size());
     in_arena([&]() {
       for_each_polygon(largest_first(input), [&](std::size_t k) {
         Job& job = jobs[k];
-        counters.run_counted(caller, mutex, [&]() {
-          try {
-            job.one_shot = CGAL::medial_axis_2(job.input->rings, Traits(),
-                                               check_in_one_shot ? CGAL::CHECK_INPUT : CGAL::TRUST_INPUT, &job.stats);
-          } catch(const CGAL::Progressive_medial_axes::Input_error& e) {
-            errors[k] = e.what();
-            return;
-          }
-          if(!check_in_one_shot) job.stats.validation_seconds = job.validation_seconds;
-          job.ma = &job.one_shot;
-        });
+        try {
+          one_shot(job.input->rings, check_in_one_shot ? CGAL::CHECK_INPUT : CGAL::TRUST_INPUT, job.one_shot, job.stats);
+        } catch(const CGAL::Progressive_medial_axes::Input_error& e) {
+          errors[k] = e.what();
+          progress.done_one();
+          return;
+        }
+        if(!check_in_one_shot) job.stats.validation_seconds = job.validation_seconds;
+        job.ma = &job.one_shot;
         progress.done_one();
       });
     });
