@@ -540,22 +540,30 @@ int run(const Options& o)
 #endif
   std::vector<std::string> errors(input.size());
   std::vector<double> validation_seconds(input.size(), 0);
-  // With --repair, a one-shot run checks, repairs and computes each polygon in
-  // one task, so that the repair of a large polygon runs while the other
-  // polygons are computed; the polygons after repair are numbered once all
-  // are done.
+  // With --repair, each polygon is checked and repaired in one task, and in a
+  // one-shot run also computed there, so that the repair of a large polygon
+  // runs while the other polygons are computed; the polygons after repair
+  // are numbered once all are done.
   const bool repair_in_tasks = o.repair && !progressive;
   typedef CGAL::Progressive_medial_axes::internal::Thread_counters<Traits> Counters;
   Counters counters;   // the filter counters of the other threads
   std::mutex counters_mutex;
   const std::thread::id caller = std::this_thread::get_id();
   // the one-shot axis of `rings` and its statistics (the filter counters of
-  // every thread counted)
+  // every thread counted); the input error, if any
   auto one_shot = [&](const auto& rings, CGAL::Medial_axis_input_check checking, Medial_axis& axis,
                       CGAL::Progressive_medial_axis_statistics& stats) {
-    counters.run_counted(caller, counters_mutex, [&]() { axis = CGAL::medial_axis_2(rings, Traits(), checking, &stats); });
+    std::string error;
+    counters.run_counted(caller, counters_mutex, [&]() {
+      try {
+        axis = CGAL::medial_axis_2(rings, Traits(), checking, &stats);
+      } catch(const CGAL::Progressive_medial_axes::Input_error& e) {
+        error = e.what();
+      }
+    });
+    return error;
   };
-  if(!check_in_one_shot && !repair_in_tasks)
+  if(!check_in_one_shot && !o.repair)
     in_arena([&]() {
       for_each_polygon(largest_first(input), [&](std::size_t k) { validation_seconds[k] = validate(input[k].rings, errors[k]); });
     });
@@ -563,10 +571,10 @@ int run(const Options& o)
   // with repair_in_tasks: the axes of the polygons after repair, in order
   std::vector<Medial_axis> repaired_axes;
   std::vector<CGAL::Progressive_medial_axis_statistics> repaired_stats;
-  if(repair_in_tasks) {
+  if(o.repair) {
     typedef pma_tool::Input_polygon<CGAL::Epick::Point_2> Polygon;
     // for each input polygon, its polygons after repair (itself if it is
-    // valid), their axes and statistics
+    // valid), and with repair_in_tasks their axes and statistics
     struct Part {
       Polygon polygon;
       Medial_axis axis;
@@ -595,65 +603,31 @@ int run(const Options& o)
             repair_errors[k] = e.what();
           }
           repair_seconds[k] = std::chrono::duration<double>(std::chrono::steady_clock::now() - tr).count();
-          if(!repair_errors[k].empty()) return;
         }
-        for(Part& part : parts[k]) one_shot(part.polygon.rings, CGAL::TRUST_INPUT, part.axis, part.stats);
-        if(errors[k].empty()) parts[k][0].stats.validation_seconds = validation_seconds[k];
+        if(repair_in_tasks && repair_errors[k].empty()) {
+          for(Part& part : parts[k]) {
+            repair_errors[k] = one_shot(part.polygon.rings, CGAL::TRUST_INPUT, part.axis, part.stats);
+            if(!repair_errors[k].empty()) break;
+          }
+          if(errors[k].empty()) parts[k][0].stats.validation_seconds = validation_seconds[k];
+        }
         progress.done_one();
       });
     });
     if constexpr(!std::is_empty<Counters>::value) counters.gather();
     if(report(repair_errors, "after repair: ")) return 2;
     std::vector<Polygon> out;
+    std::vector<double> seconds;   // of the checks of the valid input polygons
     for(std::size_t k = 0; k < input.size(); ++k) {
       if(!errors[k].empty()) repairs.count(errors[k]);
       repairs.seconds += repair_seconds[k];
       for(Part& part : parts[k]) {
         out.push_back(std::move(part.polygon));
-        repaired_axes.push_back(std::move(part.axis));
-        repaired_stats.push_back(part.stats);
-      }
-    }
-    if(out.empty()) {
-      std::cerr << o.input << ": after repair: no polygon of positive area is left\n";
-      return 2;
-    }
-    input = std::move(out);
-    validation_seconds.assign(input.size(), 0);
-    repairs.output_polygons = input.size();
-  } else if(o.repair) {
-    const auto tr = std::chrono::steady_clock::now();
-    std::vector<std::vector<CGAL::Progressive_medial_axes::Rings<CGAL::Epick::Point_2> > > repaired(input.size());
-    std::vector<std::string> repair_errors(input.size());
-    std::vector<std::size_t> invalid;
-    for(std::size_t k = 0; k < input.size(); ++k)
-      if(!errors[k].empty()) invalid.push_back(k);
-    in_arena([&]() {
-      for_each_polygon(invalid, [&](std::size_t k) {
-        try {
-          repaired[k] = pma_tool::repair_polygon(input[k].rings);
-          for(const auto& r : repaired[k]) {
-            validate(r, repair_errors[k]);
-            if(!repair_errors[k].empty()) break;
-          }
-        } catch(const CGAL::Progressive_medial_axes::Input_error& e) {
-          repair_errors[k] = e.what();
+        seconds.push_back(errors[k].empty() ? validation_seconds[k] : 0);
+        if(repair_in_tasks) {
+          repaired_axes.push_back(std::move(part.axis));
+          repaired_stats.push_back(part.stats);
         }
-      });
-    });
-    if(report(repair_errors, "after repair: ")) return 2;
-    std::vector<pma_tool::Input_polygon<CGAL::Epick::Point_2> > out;
-    std::vector<double> seconds;
-    for(std::size_t k = 0; k < input.size(); ++k) {
-      if(errors[k].empty()) {
-        out.push_back(std::move(input[k]));
-        seconds.push_back(validation_seconds[k]);
-        continue;
-      }
-      repairs.count(errors[k]);
-      for(auto& r : repaired[k]) {
-        out.push_back(pma_tool::Input_polygon<CGAL::Epick::Point_2>{std::move(r), input[k].properties});
-        seconds.push_back(0);
       }
     }
     if(out.empty()) {
@@ -663,7 +637,6 @@ int run(const Options& o)
     input = std::move(out);
     validation_seconds = std::move(seconds);
     repairs.output_polygons = input.size();
-    repairs.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - tr).count();
   } else if(report(errors, "")) {
     return 2;
   }
@@ -722,15 +695,11 @@ int run(const Options& o)
     in_arena([&]() {
       for_each_polygon(largest_first(input), [&](std::size_t k) {
         Job& job = jobs[k];
-        try {
-          one_shot(job.input->rings, check_in_one_shot ? CGAL::CHECK_INPUT : CGAL::TRUST_INPUT, job.one_shot, job.stats);
-        } catch(const CGAL::Progressive_medial_axes::Input_error& e) {
-          errors[k] = e.what();
-          progress.done_one();
-          return;
+        errors[k] = one_shot(job.input->rings, check_in_one_shot ? CGAL::CHECK_INPUT : CGAL::TRUST_INPUT, job.one_shot, job.stats);
+        if(errors[k].empty()) {
+          if(!check_in_one_shot) job.stats.validation_seconds = job.validation_seconds;
+          job.ma = &job.one_shot;
         }
-        if(!check_in_one_shot) job.stats.validation_seconds = job.validation_seconds;
-        job.ma = &job.one_shot;
         progress.done_one();
       });
     });

@@ -81,6 +81,12 @@ inline std::string line_column(const char* begin, const char* pos)
          std::to_string(static_cast<std::size_t>(pos - line_start) + 1);
 }
 
+/// `begin`, past a UTF-8 byte order mark if the text `[begin, end)` starts with one.
+inline const char* after_byte_order_mark(const char* begin, const char* end)
+{
+  return (end - begin >= 3 && std::memcmp(begin, "\xEF\xBB\xBF", 3) == 0) ? begin + 3 : begin;
+}
+
 inline bool is_space(char c) { return c == ' ' || c == '\t' || c == '\n' || c == '\r' || c == '\f' || c == '\v'; }
 inline bool is_digit(char c) { return c >= '0' && c <= '9'; }
 inline bool is_alpha(char c) { return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z'); }
@@ -256,8 +262,7 @@ public:
 
   std::vector<Input_polygon<Point_2> > read()
   {
-    if(m_end - m_p >= 3 && std::memcmp(m_p, "\xEF\xBB\xBF", 3) == 0) // UTF-8 byte order mark
-      m_p += 3;
+    m_p = after_byte_order_mark(m_p, m_end);
     skip_space();
     if(m_p == m_end)
       throw Input_error("empty input: no polygon found");
@@ -463,9 +468,7 @@ public:
 
   std::vector<Input_polygon<Point_2> > read()
   {
-    const char* p = m_begin;
-    if(m_end - p >= 3 && std::memcmp(p, "\xEF\xBB\xBF", 3) == 0) // UTF-8 byte order mark
-      p += 3;
+    const char* p = after_byte_order_mark(m_begin, m_end);
     const char* q = p;
     while(q != m_end && is_space(*q))
       ++q;
@@ -654,9 +657,7 @@ public:
   bool read(std::vector<Input_polygon<Point_2> >& out)
   {
     try {
-      const char* p = m_begin;
-      if(m_end - p >= 3 && std::memcmp(p, "\xEF\xBB\xBF", 3) == 0) // UTF-8 byte order mark
-        p += 3;
+      const char* p = after_byte_order_mark(m_begin, m_end);
       simdjson::dom::parser parser;
       Element doc;
       if(parser.parse(simdjson::padded_string(p, static_cast<std::size_t>(m_end - p))).get(doc) != simdjson::SUCCESS)
@@ -950,9 +951,7 @@ std::vector<Input_polygon<Point_2> > read_polygons_file(const std::string& path)
   } else if(internal::has_extension(path, ".wkt")) {
     geojson = false;
   } else {
-    const char* p = b;
-    if(e - p >= 3 && std::memcmp(p, "\xEF\xBB\xBF", 3) == 0)
-      p += 3;
+    const char* p = internal::after_byte_order_mark(b, e);
     while(p != e && internal::is_space(*p))
       ++p;
     geojson = (p != e && *p == '{');
