@@ -26,6 +26,7 @@
 #include <pma_tool/repair.h>
 
 #ifdef CGAL_LINKED_WITH_TBB
+#include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
 #endif
@@ -480,11 +481,26 @@ int run(const Options& o)
     f();
 #endif
   };
-  // f(k) for k in order, in parallel over the polygons where the kernel allows
+  // f(k) for k in order, in parallel over the polygons where the kernel allows.
+  // Every polygon is a task of its own that an idle thread can take
+  // (simple_partitioner, grain 1): the default partitioner keeps a range of
+  // polygons on the thread that runs the first of them until that one is
+  // done, so with one polygon far larger than the others (a country of a
+  // million vertices) the other threads ran out of work while it was
+  // computed (RESULTS.md, "Idle threads on a whole-world file").  Each
+  // polygon runs isolated: a thread that waits for the parts of its polygon
+  // takes no other polygon meanwhile, which would hold the first one up
+  // until the second is done (and count the second's filter statistics
+  // twice, in both polygons' counted tasks).
   auto for_each_polygon = [&](const std::vector<std::size_t>& order, const auto& f) {
 #ifdef CGAL_LINKED_WITH_TBB
     if(order.size() > 1 && std::is_floating_point<typename Traits::Kernel::FT>::value) {
-      tbb::parallel_for(std::size_t(0), order.size(), [&](std::size_t i) { f(order[i]); });
+      tbb::parallel_for(tbb::blocked_range<std::size_t>(0, order.size(), 1),
+                        [&](const tbb::blocked_range<std::size_t>& r) {
+                          for(std::size_t i = r.begin(); i != r.end(); ++i)
+                            tbb::this_task_arena::isolate([&] { f(order[i]); });
+                        },
+                        tbb::simple_partitioner());
       return;
     }
 #endif
@@ -886,13 +902,22 @@ int run(const Options& o)
     CGAL::Progressive_medial_axis_statistics s;
     std::size_t nb = 0, curves = 0, steps = 0, pruned_curves = 0;
     double centerline_length = 0, prune_seconds = 0;
-    for(const Job& job : jobs) {
+    // the branch points of each axis (in parallel: a vertex's kind looks at
+    // its curves, seconds on a whole-world file)
+    std::vector<std::size_t> branches(jobs.size(), 0);
+    in_arena([&]() {
+      for_each_polygon(largest_first(input), [&](std::size_t k) {
+        for(const auto& v : jobs[k].ma->vertices())
+          if(v.kind() == Medial_axis::BRANCH_POINT) ++branches[k];
+      });
+    });
+    for(std::size_t k = 0; k < jobs.size(); ++k) {
+      const Job& job = jobs[k];
       const auto& t = job.stats;
       add_statistics(s, t);
       steps += job.steps;
       curves += job.ma->number_of_edges();
-      for(const auto& v : job.ma->vertices())
-        if(v.kind() == Medial_axis::BRANCH_POINT) ++nb;
+      nb += branches[k];
       if(job.pruned) pruned_curves += job.pruned->number_of_pruned_curves();
       if(job.center) centerline_length += job.center->length();
       prune_seconds += job.prune_seconds;
