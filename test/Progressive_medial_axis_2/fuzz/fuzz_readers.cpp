@@ -11,10 +11,10 @@
 // GeoJSON text, written here (Geojson_writer): collections, features and
 // geometries with their members in any order, properties with nested values,
 // escaped and non-ASCII strings and repeated names, numbers at the edges of
-// what the readers convert, and any white space.  Both readers must read it
-// the same, and the fast one must read it unless it holds what that reader
-// leaves to the other (a position of 3 numbers, a number beyond 64 bits or
-// beyond the doubles).
+// what the readers convert, any white space, and at times a byte-order
+// mark.  Both readers must read it the same, and the fast one must read it
+// unless it holds what that reader leaves to the other (a position of 3
+// numbers, a number beyond 64 bits or beyond the doubles).
 //
 //   fuzz_readers [libFuzzer options] [CORPUS_DIR ...]
 
@@ -45,7 +45,8 @@ public:
 
   std::string text()
   {
-    space();
+    if(choice(16) == 15) m_out = "\xef\xbb\xbf";   // a UTF-8 byte-order mark, which both readers skip
+    m_out += space();
     switch(choice(5)) {
     case 0: {
       std::vector<std::string> members = { "\"type\"" + colon() + "\"FeatureCollection\"" };
