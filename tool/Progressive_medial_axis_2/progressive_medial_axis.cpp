@@ -625,7 +625,6 @@ int run(const Options& o)
             repair_errors[k] = one_shot(part.polygon.rings, CGAL::TRUST_INPUT, part.axis, part.stats);
             if(!repair_errors[k].empty()) break;
           }
-          if(errors[k].empty()) parts[k][0].stats.validation_seconds = validation_seconds[k];
         }
         progress.done_one();
       });
@@ -702,6 +701,7 @@ int run(const Options& o)
     for(std::size_t k = 0; k < jobs.size(); ++k) {
       jobs[k].one_shot = std::move(repaired_axes[k]);
       jobs[k].stats = repaired_stats[k];
+      jobs[k].stats.validation_seconds = jobs[k].validation_seconds;
       jobs[k].ma = &jobs[k].one_shot;
     }
   } else if(!progressive) {
