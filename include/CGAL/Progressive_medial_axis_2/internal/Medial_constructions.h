@@ -196,7 +196,7 @@ Line_nt<NT> oriented_line(const Site_nt<NT>& s)
 /// kept in a small direct-mapped table per thread (a hit costs a hash and
 /// four comparisons; the line costs an interval square root and division).
 /// The table is zeroed memory from calloc (an entry of zeros is unused: no
-/// segment has length zero).  It starts with 256 entries and grows to 4,096
+/// segment has length zero).  It starts with 64 entries and grows to 4,096
 /// as misses come (a new table each time, the old entries dropped), so that
 /// a small polygon touches a few pages only: a table of 4,096 entries at
 /// once was a third of the page faults of a polygon of 268 vertices.
@@ -228,7 +228,7 @@ struct Oriented_line_hook<Interval_nt<false> > {
     if(!(s.ax.is_point() && s.ay.is_point() && s.bx.is_point() && s.by.is_point()))
       return compute_oriented_line(s);
     static thread_local Table table;
-    if(!table.entries && !table.make(8))
+    if(!table.entries && !table.make(6))
       return compute_oriented_line(s);
     const double c[4] = {s.ax.inf(), s.ay.inf(), s.bx.inf(), s.by.inf()};
     std::uint64_t h = 0x9e3779b97f4a7c15ull;
