@@ -670,6 +670,8 @@ int run(const Options& o)
     jobs[k].validation_seconds = validation_seconds[k];
     if(multi) jobs[k].prefix = "p" + std::to_string(k) + ":";
   }
+  // the order in which the polygons (after repair) are given to the threads
+  const std::vector<std::size_t> jobs_largest_first = largest_first(input);
 
   if(multi && (progressive || !o.shape_out.empty()))
     usage_error("--step, --frames, --html, --progressive and --shape-out need one polygon; " + o.input + " has " +
@@ -709,7 +711,7 @@ int run(const Options& o)
     // polygons, largest first, and within each), then what the options ask
     Progress progress(jobs.size());
     in_arena([&]() {
-      for_each_polygon(largest_first(input), [&](std::size_t k) {
+      for_each_polygon(jobs_largest_first, [&](std::size_t k) {
         Job& job = jobs[k];
         errors[k] = one_shot(job.input->rings, check_in_one_shot ? CGAL::CHECK_INPUT : CGAL::TRUST_INPUT, job.one_shot, job.stats);
         if(errors[k].empty()) {
@@ -795,7 +797,7 @@ int run(const Options& o)
   // the final axis, they have time_prune of their own
   if(o.analysed())
     in_arena([&]() {
-      for_each_polygon(largest_first(input), [&](std::size_t k) {
+      for_each_polygon(jobs_largest_first, [&](std::size_t k) {
         if(jobs[k].ma) analyse(o, jobs[k]);
       });
     });
@@ -804,7 +806,7 @@ int run(const Options& o)
     // counters (counting steps is not work of the one-shot)
     const auto filters = filter_counters<Traits>(0);
     in_arena([&]() {
-      for_each_polygon(largest_first(input), [&](std::size_t k) {
+      for_each_polygon(jobs_largest_first, [&](std::size_t k) {
         jobs[k].steps = PMA(jobs[k].input->rings, Traits(), CGAL::TRUST_INPUT).number_of_steps();
       });
     });
@@ -906,7 +908,7 @@ int run(const Options& o)
     // its curves, seconds on a whole-world file)
     std::vector<std::size_t> branches(jobs.size(), 0);
     in_arena([&]() {
-      for_each_polygon(largest_first(input), [&](std::size_t k) {
+      for_each_polygon(jobs_largest_first, [&](std::size_t k) {
         for(const auto& v : jobs[k].ma->vertices())
           if(v.kind() == Medial_axis::BRANCH_POINT) ++branches[k];
       });
