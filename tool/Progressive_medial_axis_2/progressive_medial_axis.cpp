@@ -998,7 +998,12 @@ int main(int argc, char** argv)
   // ones: 10% to 15% of the analysis on real outlines, for a higher peak
   // (RESULTS.md, "Significance, pruning and centerline, fourth session").
   // Not for the axis alone: its peak on a 100,000-hole plate grows by 25%.
-  if(o.analysed()) mallopt(M_MMAP_THRESHOLD, 32 << 20);
+  // For the same reason, a large one-shot then keeps what it freed rather
+  // than give it back to the system (release_memory_of_large_one_shots()).
+  if(o.analysed()) {
+    mallopt(M_MMAP_THRESHOLD, 32 << 20);
+    CGAL::Progressive_medial_axes::internal::release_memory_of_large_one_shots() = false;
+  }
 #endif
   int status = 1;
   try {

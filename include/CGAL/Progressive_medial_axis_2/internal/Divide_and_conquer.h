@@ -65,8 +65,13 @@
 #include <tbb/task_arena.h>
 #endif
 
+#if defined(__GLIBC__)
+#include <malloc.h>
+#endif
+
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <chrono>
 #include <cstddef>
 #include <vector>
@@ -145,6 +150,49 @@ enum Parts_mode { PARTS_SEQUENTIAL, PARTS_PARALLEL, PARTS_PARALLEL_IF_WORTH_IT }
 /// small runs", third session).
 constexpr double min_parallel_seconds = 0.004;
 
+/// From this many input points on, a one-shot gives the memory it freed back
+/// to the system (release_free_memory()) after the triangulation and after
+/// each part moved into the result.
+constexpr std::size_t min_release_points = 65536;
+
+/// Gives the memory that the allocator keeps free back to the system.  glibc
+/// keeps the blocks under 128 KB that a program frees in its heaps for
+/// later requests, but the structure of the axis is made of larger blocks,
+/// which it maps afresh: the triangulation of a large polygon (its many
+/// small blocks, about 140 bytes per input point) and the small blocks of
+/// the parts' merges would otherwise stay in the process beside the axis
+/// until it exits.  A 600,000-vertex plate with 100,000 holes peaked at
+/// 452 MB on two threads without this, at 393 MB with it; a 128,000-vertex
+/// outline at 96 MB and 71 MB; the time did not change (RESULTS.md, "The
+/// peak memory of a one-shot, thirteenth session").  Elsewhere it does
+/// nothing.
+inline void release_free_memory()
+{
+#if defined(__GLIBC__)
+  malloc_trim(0);
+#endif
+}
+
+/// Whether a one-shot of `min_release_points` or more gives the memory it
+/// freed back to the system (on by default).  A program that goes on
+/// computing after the axis, and lets glibc keep freed memory for that work,
+/// turns it off: the tool does when it analyses the axis (significance,
+/// pruning, centerline), whose arrays would otherwise fault in again the
+/// pages given back (on c1m_CHN_0 the analysis took 0.050 s with them kept
+/// and 0.063 s without).
+inline std::atomic<bool>& release_memory_of_large_one_shots()
+{
+  static std::atomic<bool> on{true};
+  return on;
+}
+
+/// release_free_memory() for a one-shot of `points` input points, if
+/// release_memory_of_large_one_shots() says so.
+inline bool releases_memory(std::size_t points)
+{
+  return points >= min_release_points && release_memory_of_large_one_shots().load(std::memory_order_relaxed);
+}
+
 /// Below this many vertices, a one-shot called where oneTBB does not run
 /// yet checks the polygon before it triangulates it, on the calling thread,
 /// rather than beside it on another thread.
@@ -190,15 +238,29 @@ public:
     sides_.assign(std::size_t(T), std::array<int, 3>{{NO_INDEX, NO_INDEX, NO_INDEX}});
     added_.assign(std::size_t(T), 0);
 
-    // 1. the parts, each in a structure of its own (part 0 in the result's)
+    // 1. the parts.  On one thread they are built one after the other in
+    // the result's structure.  Otherwise part 0 is built there and each
+    // other part in a structure of its own, moved into the result's
+    // afterwards, in the order of the parts: the numbering of the result
+    // does not depend on which parts ran at the same time.  (Moving a part
+    // holds it twice for a moment: the peak of one thread, which has
+    // nothing to move, is about a part lower.)
+    bool one_thread = mode == PARTS_SEQUENTIAL || P == 1;
+#ifdef CGAL_PMA2_USE_TBB
+    one_thread = one_thread || tbb::this_task_arena::max_concurrency() == 1;
+#else
+    one_thread = true;
+#endif
+    const bool release = releases_memory(engine_.points().size());
     std::vector<Hds> structures(P);
     std::vector<Divide_and_conquer_counts> part_counts(P);
     std::vector<double> part_seconds(P, 0);
     auto build = [&](std::size_t p) {
       const auto t0 = std::chrono::steady_clock::now();
       run_part([&] {
-        Hds& hds = p == 0 ? engine_.hds() : structures[p];
-        if(p > 0) hds.reserve(2 * size_[p] + 16, 4 * size_[p] + 16);
+        const bool own = p > 0 && !one_thread;
+        Hds& hds = own ? structures[p] : engine_.hds();
+        if(own) hds.reserve(2 * size_[p] + 16, 4 * size_[p] + 16);
         Engine engine(hds, engine_.points(), engine_.traits());
         build_part(engine, int(p), part_counts[p]);
         engine.resolve_pending();
@@ -206,7 +268,7 @@ public:
       part_seconds[p] = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     };
     std::size_t first = 0;
-    bool parallel = mode != PARTS_SEQUENTIAL && P > 1;
+    bool parallel = !one_thread;
 #ifdef CGAL_PMA2_USE_TBB
     if(parallel && mode == PARTS_PARALLEL_IF_WORTH_IT && !tbb_running()) {
       // the parts one after the other, until the ones left look worth
@@ -239,7 +301,11 @@ public:
     // 2. one structure; the merges along the cut diagonals
     Hds& hds = engine_.hds();
     std::vector<typename Hds::Offsets> offsets(P);
-    for(std::size_t p = 1; p < P; ++p) offsets[p] = hds.append(structures[p]);
+    if(!one_thread)
+      for(std::size_t p = 1; p < P; ++p) {
+        offsets[p] = hds.append(structures[p]);
+        if(release) release_free_memory();
+      }
     for(int t = 0; t < T; ++t)
       for(int& h : sides_[std::size_t(t)])
         if(h != NO_INDEX) h += offsets[std::size_t(part_[std::size_t(t)])].halfedge;
