@@ -20,6 +20,7 @@
 #include <CGAL/assertions.h>
 
 #include <cstddef>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -308,12 +309,15 @@ public:
   /// Moves the elements of `other` (built on its own, for example by
   /// another thread) to the end of this structure; their indices grow by
   /// the returned offsets.  The cost is linear in the size of `other`.
-  /// Neither structure may be journaling.
+  /// Neither structure may be journaling.  Each array of `other` is freed
+  /// as soon as it is copied: the two structures hold one array twice at
+  /// most, not all of `other`.
   Offsets append(Halfedge_structure& other)
   {
     CGAL_precondition(!journal_ && !other.journal_);
     const Offsets o{int(halfedges_.size()), int(vertices_.size()), int(faces_.size())};
     auto shift = [](int& i, int by) { if(i >= 0) i += by; };
+    auto drop = [](auto& array) { std::decay_t<decltype(array)>().swap(array); };
     halfedges_.reserve(halfedges_.size() + other.halfedges_.size());
     for(Halfedge h : other.halfedges_) {
       shift(h.next, o.halfedge);
@@ -322,12 +326,15 @@ public:
       shift(h.face, o.face);   // OUTSIDE and DELETED stay
       halfedges_.push_back(h);
     }
+    drop(other.halfedges_);
     zero_length_.insert(zero_length_.end(), other.zero_length_.begin(), other.zero_length_.end());
+    drop(other.zero_length_);
     vertices_.reserve(vertices_.size() + other.vertices_.size());
     for(Vertex& v : other.vertices_) {
       shift(v.halfedge, o.halfedge);
       vertices_.push_back(std::move(v));
     }
+    drop(other.vertices_);
     faces_.reserve(faces_.size() + other.faces_.size());
     for(Face f : other.faces_) {
       shift(f.halfedge, o.halfedge);
