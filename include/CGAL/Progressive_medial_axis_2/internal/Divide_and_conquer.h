@@ -30,12 +30,15 @@
 //      parts): its triangles in breadth-first order from the part's root,
 //      each merged along the tree diagonal to its parent, and along every
 //      hole-closing diagonal of the part as soon as both its triangles are
-//      in, in a half-edge structure that the part owns; the part's vertices
-//      are then resolved (their disks constructed);
+//      in, in a half-edge structure that the part owns (on one thread, all
+//      parts in the result's structure, one after the other); the part's
+//      vertices are then resolved (their disks constructed);
 //   2. the parts' structures are appended to the result's structure (one
 //      copy of each part's records, linear in its size; no structure is
 //      shared between threads, so no merge takes a lock), and the parts are
-//      merged along the cut diagonals, each joining two components;
+//      merged along the cut diagonals, each joining two components (the
+//      arrays of the triangles are freed before, once the half-edges of
+//      those diagonals are read);
 //   3. the hole-closing diagonals between two parts are merged last: both
 //      sides of each are then the same shape, and the merge closes a ring
 //      around a hole.
@@ -298,7 +301,34 @@ public:
     }
     const auto t_join = std::chrono::steady_clock::now();
 
-    // 2. one structure; the merges along the cut diagonals
+    // 2. the diagonals between parts, in the order of their merges: the cut
+    // diagonals, then the hole-closing diagonals between two parts (those
+    // inside a part were merged by the part).  Their half-edges are read
+    // now, and the arrays of the triangles freed before the parts are moved
+    // (the peak of the one-shot).
+    struct Join {
+      int halfedge[2], part[2];
+    };
+    std::vector<Join> joins;
+    auto join = [&](int t, int u) {
+      joins.push_back({{sides_[std::size_t(t)][std::size_t(side_towards(t, u))],
+                        sides_[std::size_t(u)][std::size_t(side_towards(u, t))]},
+                       {part_[std::size_t(t)], part_[std::size_t(u)]}});
+    };
+    for(std::size_t p = 1; p < P; ++p) {
+      const int r = roots_[p];
+      if(parent_[std::size_t(r)] != NO_INDEX)   // (the first part of a connected part has none)
+        join(parent_[std::size_t(r)], r);
+    }
+    for(const auto& d : off_tree_)
+      if(part_[std::size_t(d[0])] != part_[std::size_t(d[1])]) join(d[0], d[1]);
+    for(auto* v : {&parent_, &order_, &part_}) free_vector(*v);
+    free_vector(triangles_);
+    free_vector(sides_);
+    free_vector(added_);
+    free_vector(off_tree_);
+
+    // 3. one structure; the merges along the diagonals between parts
     Hds& hds = engine_.hds();
     std::vector<typename Hds::Offsets> offsets(P);
     if(!one_thread)
@@ -306,19 +336,11 @@ public:
         offsets[p] = hds.append(structures[p]);
         if(release) release_free_memory();
       }
-    for(int t = 0; t < T; ++t)
-      for(int& h : sides_[std::size_t(t)])
-        if(h != NO_INDEX) h += offsets[std::size_t(part_[std::size_t(t)])].halfedge;
-    for(std::size_t p = 1; p < P; ++p) {
-      const int r = roots_[p];
-      if(parent_[std::size_t(r)] != NO_INDEX)   // (the first part of a connected part has none)
-        merge_along(engine_, parent_[std::size_t(r)], r, counts);
+    for(const Join& j : joins) {
+      CGAL_assertion(j.halfedge[0] != NO_INDEX && j.halfedge[1] != NO_INDEX);
+      counts.add(engine_.merge(j.halfedge[0] + offsets[std::size_t(j.part[0])].halfedge,
+                               j.halfedge[1] + offsets[std::size_t(j.part[1])].halfedge, counts));
     }
-    // 3. the hole-closing diagonals between parts (those inside a part were
-    // merged by the part)
-    for(const auto& d : off_tree_)
-      if(part_[std::size_t(d[0])] != part_[std::size_t(d[1])])
-        merge_along(engine_, d[0], d[1], counts);
     engine_.resolve_pending();
     counts.join_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t_join).count();
     return counts;

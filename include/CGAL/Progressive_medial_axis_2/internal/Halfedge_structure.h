@@ -20,13 +20,19 @@
 #include <CGAL/assertions.h>
 
 #include <cstddef>
-#include <type_traits>
 #include <utility>
 #include <vector>
 
 namespace CGAL {
 namespace Progressive_medial_axes {
 namespace internal {
+
+/// Frees the memory of a vector (`clear()` keeps it).
+template <class Vector>
+void free_vector(Vector& v)
+{
+  Vector().swap(v);
+}
 
 constexpr int NO_INDEX = -1;
 /// Face index of the outside of the shape (the twins of boundary half-edges).
@@ -317,7 +323,6 @@ public:
     CGAL_precondition(!journal_ && !other.journal_);
     const Offsets o{int(halfedges_.size()), int(vertices_.size()), int(faces_.size())};
     auto shift = [](int& i, int by) { if(i >= 0) i += by; };
-    auto drop = [](auto& array) { std::decay_t<decltype(array)>().swap(array); };
     halfedges_.reserve(halfedges_.size() + other.halfedges_.size());
     for(Halfedge h : other.halfedges_) {
       shift(h.next, o.halfedge);
@@ -326,15 +331,15 @@ public:
       shift(h.face, o.face);   // OUTSIDE and DELETED stay
       halfedges_.push_back(h);
     }
-    drop(other.halfedges_);
+    free_vector(other.halfedges_);
     zero_length_.insert(zero_length_.end(), other.zero_length_.begin(), other.zero_length_.end());
-    drop(other.zero_length_);
+    free_vector(other.zero_length_);
     vertices_.reserve(vertices_.size() + other.vertices_.size());
     for(Vertex& v : other.vertices_) {
       shift(v.halfedge, o.halfedge);
       vertices_.push_back(std::move(v));
     }
-    drop(other.vertices_);
+    free_vector(other.vertices_);
     faces_.reserve(faces_.size() + other.faces_.size());
     for(Face f : other.faces_) {
       shift(f.halfedge, o.halfedge);
