@@ -458,7 +458,7 @@ one_shot_medial_axis(const std::vector<std::vector<typename Traits::Kernel::Poin
   t0 = std::chrono::steady_clock::now();
   std::vector<Triangle> triangles = triangulation->finish(*data);
   triangulation.reset();
-  if(releases_memory(data->points.size())) release_free_memory();
+  release_free_memory(data->points.size());
   stats.triangles = triangles.size();
   stats.triangulation_seconds = stats.overlapped_seconds + seconds_since(t0);
 

@@ -30,6 +30,10 @@
 #include <pma_test/compare_curves.h>
 #include <pma_test/pruned_graph.h>
 
+#ifdef CGAL_LINKED_WITH_TBB
+#include <tbb/task_arena.h>
+#endif
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -285,12 +289,25 @@ bool run_polygon(Checker<Traits>& checker, const Rings& rings, const std::string
   // the one-shot divide and conquer, cut into 1 to 9 parts (with region growing)
   if(pma_test::failures() == before && g_driver == CGAL::REGION_GROWING) {
     static std::size_t count = 0;
-    const std::size_t parts = 1 + (count++ % 9);
+    const std::size_t parts = 1 + (count % 9);
+    // every other one on one thread, where all parts are built in the
+    // result's structure instead of moved into it
+    const bool one_thread = (count++ / 9) % 2 == 1;
     CGAL::Progressive_medial_axis_statistics stats;
-    const auto ma = CGAL::Progressive_medial_axes::internal::one_shot_medial_axis(
-      CGAL::Progressive_medial_axes::internal::rings_of<typename Traits::Kernel>(rings), Traits(), CGAL::CHECK_INPUT,
-      &stats, parts);
-    checker.compare(ma, "one-shot in " + std::to_string(parts) + " parts", true, what, rings);
+    auto one_shot = [&] {
+      return CGAL::Progressive_medial_axes::internal::one_shot_medial_axis(
+        CGAL::Progressive_medial_axes::internal::rings_of<typename Traits::Kernel>(rings), Traits(), CGAL::CHECK_INPUT,
+        &stats, parts);
+    };
+    decltype(one_shot()) ma;
+#ifdef CGAL_LINKED_WITH_TBB
+    if(one_thread)
+      tbb::task_arena(1).execute([&] { ma = one_shot(); });
+    else
+#endif
+      ma = one_shot();
+    checker.compare(ma, "one-shot in " + std::to_string(parts) + " parts" + (one_thread ? " on one thread" : ""), true,
+                    what, rings);
     CHECK(stats.anomalies == 0, what << ": " << stats.anomalies << " forced events in the one-shot");
   }
   return pma_test::failures() == before;

@@ -158,24 +158,6 @@ constexpr double min_parallel_seconds = 0.004;
 /// each part moved into the result.
 constexpr std::size_t min_release_points = 65536;
 
-/// Gives the memory that the allocator keeps free back to the system.  glibc
-/// keeps the blocks under 128 KB that a program frees in its heaps for
-/// later requests, but the structure of the axis is made of larger blocks,
-/// which it maps afresh: the triangulation of a large polygon (its many
-/// small blocks, about 140 bytes per input point) and the small blocks of
-/// the parts' merges would otherwise stay in the process beside the axis
-/// until it exits.  A 600,000-vertex plate with 100,000 holes peaked at
-/// 452 MB on two threads without this, at 393 MB with it; a 128,000-vertex
-/// outline at 96 MB and 71 MB; the time did not change (RESULTS.md, "The
-/// peak memory of a one-shot, thirteenth session").  Elsewhere it does
-/// nothing.
-inline void release_free_memory()
-{
-#if defined(__GLIBC__)
-  malloc_trim(0);
-#endif
-}
-
 /// Whether a one-shot of `min_release_points` or more gives the memory it
 /// freed back to the system (on by default).  A program that goes on
 /// computing after the axis, and lets glibc keep freed memory for that work,
@@ -189,11 +171,27 @@ inline std::atomic<bool>& release_memory_of_large_one_shots()
   return on;
 }
 
-/// release_free_memory() for a one-shot of `points` input points, if
-/// release_memory_of_large_one_shots() says so.
-inline bool releases_memory(std::size_t points)
+/// In a one-shot of `points` input points, from `min_release_points` on and
+/// if release_memory_of_large_one_shots() says so, gives the memory that the
+/// allocator keeps free back to the system.  glibc keeps the blocks under
+/// 128 KB that a program frees in its heaps for later requests, but the
+/// structure of the axis is made of larger blocks,
+/// which it maps afresh: the triangulation of a large polygon (its many
+/// small blocks, about 140 bytes per input point) and the small blocks of
+/// the parts' merges would otherwise stay in the process beside the axis
+/// until it exits.  A 600,000-vertex plate with 100,000 holes peaked at
+/// 452 MB on two threads without this, at 393 MB with it; a 128,000-vertex
+/// outline at 96 MB and 71 MB; the time did not change (RESULTS.md, "The
+/// peak memory of a one-shot, thirteenth session").  Elsewhere it does
+/// nothing.
+inline void release_free_memory(std::size_t points)
 {
-  return points >= min_release_points && release_memory_of_large_one_shots().load(std::memory_order_relaxed);
+#if defined(__GLIBC__)
+  if(points >= min_release_points && release_memory_of_large_one_shots().load(std::memory_order_relaxed))
+    malloc_trim(0);
+#else
+  (void)points;
+#endif
 }
 
 /// Below this many vertices, a one-shot called where oneTBB does not run
@@ -246,15 +244,14 @@ public:
     // other part in a structure of its own, moved into the result's
     // afterwards, in the order of the parts: the numbering of the result
     // does not depend on which parts ran at the same time.  (Moving a part
-    // holds it twice for a moment: the peak of one thread, which has
-    // nothing to move, is about a part lower.)
+    // holds one of its arrays twice for a moment; one thread has nothing
+    // to move.)
     bool one_thread = mode == PARTS_SEQUENTIAL || P == 1;
 #ifdef CGAL_PMA2_USE_TBB
     one_thread = one_thread || tbb::this_task_arena::max_concurrency() == 1;
 #else
     one_thread = true;
 #endif
-    const bool release = releases_memory(engine_.points().size());
     std::vector<Hds> structures(P);
     std::vector<Divide_and_conquer_counts> part_counts(P);
     std::vector<double> part_seconds(P, 0);
@@ -311,9 +308,7 @@ public:
     };
     std::vector<Join> joins;
     auto join = [&](int t, int u) {
-      joins.push_back({{sides_[std::size_t(t)][std::size_t(side_towards(t, u))],
-                        sides_[std::size_t(u)][std::size_t(side_towards(u, t))]},
-                       {part_[std::size_t(t)], part_[std::size_t(u)]}});
+      joins.push_back({{side(t, u), side(u, t)}, {part_[std::size_t(t)], part_[std::size_t(u)]}});
     };
     for(std::size_t p = 1; p < P; ++p) {
       const int r = roots_[p];
@@ -322,7 +317,9 @@ public:
     }
     for(const auto& d : off_tree_)
       if(part_[std::size_t(d[0])] != part_[std::size_t(d[1])]) join(d[0], d[1]);
-    for(auto* v : {&parent_, &order_, &part_}) free_vector(*v);
+    free_vector(parent_);
+    free_vector(order_);
+    free_vector(part_);
     free_vector(triangles_);
     free_vector(sides_);
     free_vector(added_);
@@ -334,7 +331,7 @@ public:
     if(!one_thread)
       for(std::size_t p = 1; p < P; ++p) {
         offsets[p] = hds.append(structures[p]);
-        if(release) release_free_memory();
+        release_free_memory(engine_.points().size());
       }
     for(const Join& j : joins) {
       CGAL_assertion(j.halfedge[0] != NO_INDEX && j.halfedge[1] != NO_INDEX);
@@ -415,6 +412,9 @@ private:
 
   int side_towards(int u, int t) const { return internal::side_towards(triangles_, u, t); }
 
+  // The half-edge of triangle t's side along its diagonal with triangle u.
+  int side(int t, int u) const { return sides_[std::size_t(t)][std::size_t(side_towards(t, u))]; }
+
   // Adds triangle t, merged along its tree diagonal to its parent (already
   // in the structure of `engine`), or as the first triangle of its part.
   void add(Engine& engine, int t, bool first, Divide_and_conquer_counts& counts)
@@ -427,7 +427,7 @@ private:
     }
     const int u = parent_[std::size_t(t)];
     const int e = side_towards(t, u);
-    const int h = sides_[std::size_t(u)][std::size_t(side_towards(u, t))];
+    const int h = side(u, t);
     sides_[std::size_t(t)] = engine.add_triangle_across(T.v, e, h);
     counts.add(engine.merge(h, sides_[std::size_t(t)][std::size_t(e)], counts));
   }
@@ -461,9 +461,7 @@ private:
   // Merges the sides of triangles t and u along their common diagonal.
   void merge_along(Engine& engine, int t, int u, Divide_and_conquer_counts& counts)
   {
-    const int ht = sides_[std::size_t(t)][std::size_t(side_towards(t, u))];
-    const int hu = sides_[std::size_t(u)][std::size_t(side_towards(u, t))];
-    counts.add(engine.merge(ht, hu, counts));
+    counts.add(engine.merge(side(t, u), side(u, t), counts));
   }
 
   Engine& engine_;
