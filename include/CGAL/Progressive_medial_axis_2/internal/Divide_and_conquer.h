@@ -155,8 +155,14 @@ constexpr double min_parallel_seconds = 0.004;
 
 /// From this many input points on, a one-shot gives the memory it freed back
 /// to the system (release_free_memory()) after the triangulation and after
-/// each part moved into the result.
+/// the parts moved into the result, each time parts of
+/// `min_release_triangles` triangles or more have been moved since the last
+/// time and after the last part.  With many small parts, a release after
+/// each one cost 5 ms of the 35 ms join of a 128,000-vertex outline; one
+/// every 8,192 triangles saves that and keeps its peak (66 MB), one every
+/// 32,768 raised the peak to 73 MB.
 constexpr std::size_t min_release_points = 65536;
+constexpr std::size_t min_release_triangles = 8192;
 
 /// Whether a one-shot of `min_release_points` or more gives the memory it
 /// freed back to the system (on by default).  A program that goes on
@@ -328,11 +334,17 @@ public:
     // 3. one structure; the merges along the diagonals between parts
     Hds& hds = engine_.hds();
     std::vector<typename Hds::Offsets> offsets(P);
-    if(!one_thread)
+    if(!one_thread) {
+      std::size_t moved = 0;   // triangles of the parts moved since the last release
       for(std::size_t p = 1; p < P; ++p) {
         offsets[p] = hds.append(structures[p]);
-        release_free_memory(engine_.points().size());
+        moved += size_[p];
+        if(moved >= min_release_triangles || p + 1 == P) {
+          release_free_memory(engine_.points().size());
+          moved = 0;
+        }
       }
+    }
     for(const Join& j : joins) {
       CGAL_assertion(j.halfedge[0] != NO_INDEX && j.halfedge[1] != NO_INDEX);
       counts.add(engine_.merge(j.halfedge[0] + offsets[std::size_t(j.part[0])].halfedge,
@@ -473,21 +485,28 @@ private:
   std::vector<char> added_;   // written by the part of each triangle only
 };
 
-/// The number of parts of a one-shot of `triangles` triangles: four per
-/// thread of the current task arena (so that the threads stay busy to the
-/// end), on one thread too, and parts of at least 32 triangles.  Balanced
-/// parts merged pairwise do less work than one part grown a triangle at a
-/// time where many generators are cocircular: on one thread, a regular
-/// 1000-gon took 279 ms in one part and 89 ms in four, a Koch snowflake of
-/// 384 vertices 19.7 ms and 13.4 ms, country outlines about 6% less, integer
-/// grids the same (RESULTS.md, 2026-11-26).
+/// The number of parts of a one-shot of `triangles` triangles: parts of
+/// about 4,096 triangles, at least four and at most sixteen per thread of
+/// the current task arena (on one thread too), and of at least 32
+/// triangles.  Balanced parts merged pairwise do less work than one part
+/// grown a triangle at a time where many generators are cocircular: on one
+/// thread, a regular 1000-gon took 279 ms in one part and 89 ms in four, a
+/// Koch snowflake of 384 vertices 19.7 ms and 13.4 ms, country outlines
+/// about 6% less, integer grids the same (RESULTS.md, 2026-11-26).  Small
+/// parts also keep the threads busy to the end: with four parts per thread,
+/// a thread that took the slowest part left the other idle for up to a
+/// part's time (country outlines of 80,000 to 128,000 vertices on two
+/// threads took 5% to 8% less time in 32 parts than in 8; RESULTS.md,
+/// "More parts", fourteenth session).  Each part costs a little in the join,
+/// which is why the parts of smaller polygons stay larger.
 inline std::size_t default_parts(std::size_t triangles)
 {
   std::size_t threads = 1;
 #ifdef CGAL_PMA2_USE_TBB
   threads = std::size_t((std::max)(1, tbb::this_task_arena::max_concurrency()));
 #endif
-  return (std::max)(std::size_t(1), (std::min)(4 * threads, triangles / 32));
+  const std::size_t by_size = (std::min)((std::max)(triangles / 4096, 4 * threads), 16 * threads);
+  return (std::max)(std::size_t(1), (std::min)(by_size, triangles / 32));
 }
 
 /// The axis of the polygon of `triangles` (its constrained Delaunay
