@@ -136,15 +136,33 @@ std::vector<Triangle> Ring_triangulation<Kernel>::finish(Data& data)
       if(at.empty()) at.push_back(handle[i]->info());
       at.push_back(int(i));
     }
+  // The constraints.  Most edges of a polygon are edges of the Delaunay
+  // triangulation of its points already: those are marked constrained on
+  // both sides here, which is all that CDT::insert_constraint() would do for
+  // them, without its work stack (two blocks of the heap for each call).
+  // The others are inserted, and looked at below for points they pass
+  // through.  (On a 128,000-vertex outline the constraints took 11 ms
+  // instead of 26, the search for such points 0.2 ms instead of 12.)
   const std::size_t n = points.size();
-  for(std::size_t i = 0; i < n; ++i)
-    if(info[i].next >= 0) cdt.insert_constraint(handle[i], handle[std::size_t(info[i].next)]);
+  std::vector<std::size_t> inserted;
+  for(std::size_t i = 0; i < n; ++i) {
+    if(info[i].next < 0) continue;
+    const Vertex_handle a = handle[i], b = handle[std::size_t(info[i].next)];
+    typename CDT::Face_handle f;
+    int e;
+    if(cdt.dimension() == 2 && cdt.is_edge(a, b, f, e)) {
+      f->set_constraint(e, true);
+      f->neighbor(e)->set_constraint(cdt.mirror_index(f, e), true);
+    } else {
+      cdt.insert_constraint(a, b);
+      inserted.push_back(i);
+    }
+  }
 
   // T's: an edge whose constraint passes through other points
   const K k;
   bool split = false;
-  for(std::size_t i = 0; i < n; ++i) {
-    if(info[i].next < 0) continue;
+  for(const std::size_t i : inserted) {
     const Vertex_handle a = handle[i], b = handle[std::size_t(info[i].next)];
     if(cdt.is_edge(a, b)) continue;
     int last = int(i);
