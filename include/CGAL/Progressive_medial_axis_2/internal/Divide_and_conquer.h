@@ -33,12 +33,14 @@
 //      in, in a half-edge structure that the part owns (on one thread, all
 //      parts in the result's structure, one after the other); the part's
 //      vertices are then resolved (their disks constructed);
-//   2. the parts' structures are appended to the result's structure (one
+//   2. each part's structure is appended to the result's structure as soon
+//      as it and the parts before it are built, by the thread that built
+//      the last of them, while the other threads go on building parts (one
 //      copy of each part's records, linear in its size; no structure is
-//      shared between threads, so no merge takes a lock), and the parts are
-//      merged along the cut diagonals, each joining two components (the
-//      arrays of the triangles are freed before, once the half-edges of
-//      those diagonals are read);
+//      shared between threads, so no merge takes a lock); once all are in,
+//      the half-edges of the diagonals between parts are read, the arrays
+//      of the triangles freed, and the parts merged along the cut
+//      diagonals, each joining two components;
 //   3. the hole-closing diagonals between two parts are merged last: both
 //      sides of each are then the same shape, and the merge closes a ring
 //      around a hole.
