@@ -286,13 +286,17 @@ bool run_polygon(Checker<Traits>& checker, const Rings& rings, const std::string
     checker.compare(pma, true, what, rings);
   // exact decisions never force an event; the double model redoes such merges
   CHECK(pma.statistics().anomalies == 0, what << ": " << pma.statistics().anomalies << " forced events");
-  // the one-shot divide and conquer, cut into 1 to 9 parts (with region growing)
+  // the one-shot divide and conquer, cut into 1 to 9, 16 or 25 parts (with
+  // region growing; many parts as the default gives large polygons: each
+  // moved into the result while others are built)
   if(pma_test::failures() == before && g_driver == CGAL::REGION_GROWING) {
     static std::size_t count = 0;
-    const std::size_t parts = 1 + (count % 9);
-    // every other one on one thread, where all parts are built in the
+    static const std::size_t part_counts[] = {1, 2, 3, 4, 5, 6, 7, 8, 9, 16, 25};
+    const std::size_t cycle = sizeof(part_counts) / sizeof(part_counts[0]);
+    const std::size_t parts = part_counts[count % cycle];
+    // every other cycle on one thread, where all parts are built in the
     // result's structure instead of moved into it
-    const bool one_thread = (count++ / 9) % 2 == 1;
+    const bool one_thread = (count++ / cycle) % 2 == 1;
     CGAL::Progressive_medial_axis_statistics stats;
     auto one_shot = [&] {
       return CGAL::Progressive_medial_axes::internal::one_shot_medial_axis(
