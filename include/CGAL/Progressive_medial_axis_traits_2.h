@@ -372,7 +372,7 @@ Gmpq exact_gmpq(const boost::multiprecision::number<Backend, ET>& q)
 
 /// Converts a coordinate (a double, or an exact number of Epeck) to the
 /// number type NT of a stage of the filtered traits: exactly, except for
-/// the approximate stages (intervals enclose it, double-double rounds it).
+/// the intervals, which enclose it (double-double takes only doubles).
 template <class NT>
 struct To_nt_convert {
   NT operator()(double x) const { return NT(x); }
@@ -380,7 +380,12 @@ struct To_nt_convert {
   NT operator()(const T& x) const
   {
     if constexpr(std::is_same<NT, Interval_nt<false> >::value) return NT(CGAL::to_interval(x));
-    else if constexpr(std::is_same<NT, Double_double>::value) return NT(CGAL::to_double(x));
+    else if constexpr(std::is_same<NT, Double_double>::value) {
+      const std::pair<double, double> i = CGAL::to_interval(x);
+      if(i.first != i.second)
+        throw Inexact_double_double_input();
+      return NT(i.first);
+    }
     else if constexpr(std::is_same<NT, Small_one_root>::value || std::is_same<NT, Small_nested_root_number>::value)
       return NT(Small_rational(exact_gmpq(x)));
     else if constexpr(std::is_same<NT, double>::value) return CGAL::to_double(x);
@@ -1093,39 +1098,52 @@ private:
     return compare_times(t, now) == SMALLER;
   }
 
-  // The disk tangent to three sites, rounded to double.
+  // The centre (x, y), with an exact zero as +0 whichever stage rounded it.
+  static Point_2 point_of_doubles(double x, double y) { return Point_2(x + 0.0, y + 0.0); }
+
+  // The disk tangent to three sites: the exact disk correctly rounded to
+  // double (ties to even).
   static bool disk(const Site_2* s, Point_2& centre, FT& radius)
   {
     Progressive_medial_axes::internal::Triple_relations rel = Progressive_medial_axes::internal::triple_relations<CK>(s);
     ++filter_statistics().interval_evaluations;
     bool branches_decided = false;
+    Progressive_medial_axes::internal::Circle_nt<Interval> enclosure;
     {
-      Progressive_medial_axes::internal::Circle_nt<Interval> circle;
-      const int found = interval_disk(s, rel, circle);
+      const int found = interval_disk(s, rel, enclosure);
       if(found == 0)
         return false;
       branches_decided = found > 0;
-      if(branches_decided && circle.x.is_point() && circle.y.is_point() && circle.r.is_point() && std::isfinite(circle.x.inf()) &&
-         std::isfinite(circle.y.inf()) && std::isfinite(circle.r.inf())) {
-        centre = Point_2(circle.x.inf(), circle.y.inf());
-        radius = circle.r.inf();
+      if(branches_decided && enclosure.x.is_point() && enclosure.y.is_point() && enclosure.r.is_point() &&
+         std::isfinite(enclosure.x.inf()) && std::isfinite(enclosure.y.inf()) && std::isfinite(enclosure.r.inf())) {
+        centre = point_of_doubles(enclosure.x.inf(), enclosure.y.inf());
+        radius = enclosure.r.inf();
         return true;
       }
     }
     if(branches_decided) {
       // The intervals took every branch: the same computation in
-      // double-double arithmetic (about 106 bits), rounded to double, gives
-      // the exact disk correctly rounded in all but ill-conditioned cases.
-      // Coordinates far from 1 (near 1e150 and beyond) overflow its
-      // products: such a disk goes on to the MPFR stage.
+      // double-double arithmetic (about 106 bits).  Its result is kept only
+      // if it rounds to the same double as every value within an error
+      // bound of it; else the disk goes on to the MPFR stage, and exact
+      // values on a rounding boundary (zeros, midpoints of two doubles: the
+      // ties of symmetric and decimal input) to the exact stages, so that
+      // the disk is always the exact one correctly rounded.  Coordinates far
+      // from 1 (near 1e150 and beyond) overflow its products and go on too.
       ++filter_statistics().double_double_evaluations;
+      using Progressive_medial_axes::internal::rounds_within;
       Progressive_medial_axes::internal::Circle_nt<Progressive_medial_axes::internal::Double_double> circle;
-      if(disk_nt<Progressive_medial_axes::internal::Double_double>(s, rel, circle) &&
-         std::isfinite(circle.x.to_double()) && std::isfinite(circle.y.to_double()) &&
-         std::isfinite(circle.r.to_double())) {
-        centre = Point_2(circle.x.to_double(), circle.y.to_double());
-        radius = circle.r.to_double();
-        return true;
+      const bool cancels = enclosure.root_cancels;
+      try {
+        if(disk_nt<Progressive_medial_axes::internal::Double_double>(s, rel, circle) &&
+           rounds_within(circle.x, enclosure.x.inf(), enclosure.x.sup(), cancels) &&
+           rounds_within(circle.y, enclosure.y.inf(), enclosure.y.sup(), cancels) &&
+           rounds_within(circle.r, enclosure.r.inf(), enclosure.r.sup(), cancels)) {
+          centre = point_of_doubles(circle.x.to_double(), circle.y.to_double());
+          radius = circle.r.to_double();
+          return true;
+        }
+      } catch(Progressive_medial_axes::internal::Inexact_double_double_input&) {
       }
     }
     ++filter_statistics().mpfr_evaluations;
@@ -1136,7 +1154,7 @@ private:
           return false;
         if(!circle.x.rounds_to_one_double() || !circle.y.rounds_to_one_double() || !circle.r.rounds_to_one_double())
           return std::nullopt;
-        centre = Point_2(circle.x.midpoint(), circle.y.midpoint());
+        centre = point_of_doubles(circle.x.midpoint(), circle.y.midpoint());
         radius = circle.r.midpoint();
         return true;
       },
@@ -1147,7 +1165,7 @@ private:
           if(!disk_nt<N>(s, rel, circle))
             return false;
           ++filter_statistics().rational_evaluations;
-          centre = Point_2(circle.x.to_double(), circle.y.to_double());
+          centre = point_of_doubles(circle.x.to_double(), circle.y.to_double());
           radius = circle.r.to_double();
           return true;
         };
@@ -1161,7 +1179,7 @@ private:
       Progressive_medial_axes::internal::Circle_nt<N> circle;
       if(!disk_nt<N>(s, rel, circle))
         return false;
-      centre = Point_2(circle.x.to_double(), circle.y.to_double());
+      centre = point_of_doubles(circle.x.to_double(), circle.y.to_double());
       radius = circle.r.to_double();
       return true;
     });

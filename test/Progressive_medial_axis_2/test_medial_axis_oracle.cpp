@@ -42,9 +42,11 @@
 #include <dirent.h>
 #include <iostream>
 #include <functional>
+#include <iomanip>
 #include <map>
 #include <sstream>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 namespace {
@@ -158,9 +160,49 @@ public:
     const bool touching = std::adjacent_find(all.begin(), all.end()) != all.end();
     check_invariants(ma, step, what, shape_xy, oracle.bbox_diagonal, int(shape.size()) - 1, !touching);
     check_inscribed_circle(ma, step, what, oracle, shape_xy);
+    if(std::is_same<Traits, CGAL::Progressive_medial_axis_traits_2<CGAL::Epick> >::value)
+      check_rounding(ma, names, step, what, oracle);
     if(input_names && !touching) check_pruning(ma, step, what, int(shape.size()) - 1);
     ++comparisons;
     return pma_test::failures() == before;
+  }
+
+  // With exact decisions, a branch point is the exact point correctly
+  // rounded (ties to even), as is the oracle's: every branch point of three
+  // generators equals the oracle's branch point of the same generators.
+  // (Where four or more generators meet, ours is computed from one triple
+  // of them and the oracle may list two nearly coincident points.)
+  void check_rounding(const MA& ma, const Names& names, const std::string& step, const std::string& what,
+                      const pma_test::Oracle_result& oracle)
+  {
+    std::map<std::vector<std::string>, const pma_test::Oracle_branch*> by_generators;
+    for(const auto& b : oracle.branches)
+      if(b.generators.size() == 3) {
+        const auto inserted = by_generators.emplace(b.generators, &b);
+        if(!inserted.second) inserted.first->second = nullptr;   // listed twice: not compared
+      }
+    std::size_t differ = 0;
+    std::ostringstream first;
+    for(const auto& v : ma.vertices()) {
+      if(v.kind() != MA::BRANCH_POINT) continue;
+      std::vector<std::string> g;
+      for(const auto& gen : v.generators()) g.push_back(names(gen));
+      if(g.size() != 3) continue;
+      std::sort(g.begin(), g.end());
+      const auto found = by_generators.find(g);
+      if(found == by_generators.end() || found->second == nullptr) continue;
+      const pma_test::Oracle_branch& b = *found->second;
+      const auto p = MA::to_xy(v.point());
+      const double r = CGAL::to_double(v.radius());
+      ++rounding_comparisons;
+      if(p.first == b.x && p.second == b.y && r == b.r) continue;
+      if(differ++ == 0)
+        first << g[0] << " " << g[1] << " " << g[2] << std::setprecision(17) << " at (" << p.first << ", "
+              << p.second << ") r=" << r << ", the oracle's at (" << b.x << ", " << b.y << ") r=" << b.r;
+    }
+    CHECK(differ == 0, what << " step " << step << ": " << differ
+                            << " branch points differ from the oracle's correctly rounded ones, the first: "
+                            << first.str());
   }
 
   // The maximum inscribed circle: at least as large as the oracle's largest
@@ -258,6 +300,7 @@ public:
   }
 
   std::size_t comparisons = 0;
+  std::size_t rounding_comparisons = 0;   // branch points compared exactly with the oracle's
 };
 
 // Compares the full axis and, with every_step, the axis of every step, or
@@ -980,7 +1023,8 @@ int run_all(const Options& o)
     CHECK(overflows > 0, "no computation in 128-bit rationals overflowed");
   }
 #endif
-  std::cout << checker.comparisons << " comparisons with the oracle, " << pma_test::failures() << " failures, "
+  std::cout << checker.comparisons << " comparisons with the oracle (" << checker.rounding_comparisons
+            << " branch points compared exactly), " << pma_test::failures() << " failures, "
             << std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() << " s\n";
   return pma_test::failures() == 0 ? 0 : 1;
 }

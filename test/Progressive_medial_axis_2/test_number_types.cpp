@@ -4,7 +4,9 @@
 // the nested-root numbers (internal/Nested_root_number.h) that take them:
 // several roots, roots of roots, roots that denest, exact zeros, division;
 // and the MPFR intervals' products and quotients by the signs of the bounds
-// (internal/Mpfr_interval.h) against the hull of the four products.
+// (internal/Mpfr_interval.h) against the hull of the four products; and
+// the certification of double-double results (internal/Double_double.h).
+#include <CGAL/Progressive_medial_axis_2/internal/Double_double.h>
 #include <CGAL/Progressive_medial_axis_2/internal/Mpfr_interval.h>
 #include <CGAL/Progressive_medial_axis_2/internal/One_root_rational.h>
 #include <CGAL/Progressive_medial_axis_2/internal/Nested_root_number.h>
@@ -98,6 +100,17 @@ void nested_root_tests()
   CHECK(nroot(N(4) + sb) > nroot(N(4) - sb) && !(nroot(N(4) + sb) < nroot(N(4) - sb)), "nested: ordering");
   CHECK(s2.to_double() == std::sqrt(2.0) && (N(1) / N(3)).to_double() == 1.0 / 3.0, "nested: to_double");
   CHECK(d.to_interval().inf() <= 1 + std::sqrt(2.0) && d.to_interval().sup() >= 1 + std::sqrt(2.0), "nested: to_interval");
+  // to_double of rational values written with roots that cancel only in value
+  // (d - sqrt 2 = 1): a midpoint of two doubles rounds to even, on both sides
+  // of zero, and a zero is 0 (the ties of symmetric input)
+  for(int k = 1; k <= 7; k += 2) {
+    const N midpoint = (d - s2) * (N(1) + N(k) * N(std::ldexp(1.0, -53)));   // 1 + k 2^-53
+    const int j = ((k + 1) / 2) % 2 == 0 ? (k + 1) / 2 : (k - 1) / 2;           // the even neighbour
+    const double expected = 1 + std::ldexp(double(j), -52);
+    CHECK(midpoint.to_double() == expected && (-midpoint).to_double() == -expected,
+          "nested: 1 + " << k << " 2^-53 rounds to even");
+  }
+  CHECK((d - s2 - N(1)).to_double() == 0 && ((d - s2) * N(3) - N(3)).to_double() == 0, "nested: zero");
 
   // random a + b sqrt(c + e sqrt f) + g sqrt h against the same built another
   // way, and against a perturbed value, signs checked against MPFR
@@ -334,8 +347,30 @@ void mpfr_interval_tests()
 
 } // namespace
 
+// A double-double result is kept only if everything within its error bound
+// (from the width of the double interval) rounds to one double.
+void double_double_tests()
+{
+  using CGAL::Progressive_medial_axes::internal::Double_double;
+  using CGAL::Progressive_medial_axes::internal::rounds_within;
+  const double u = std::ldexp(1.0, -52);
+  const Double_double near_one = Double_double(1) + Double_double(std::ldexp(1.0, -60));
+  CHECK(rounds_within(near_one, 1, 1 + u, false), "double-double: 1 + 2^-60 rounds to 1");
+  CHECK(near_one.to_double() == 1, "double-double: to_double");
+  const Double_double midpoint = Double_double(1) + Double_double(std::ldexp(1.0, -53));
+  CHECK(!rounds_within(midpoint, 1, 1 + u, false), "double-double: a midpoint is left to exact arithmetic");
+  CHECK(!rounds_within(Double_double(0), -1e-16, 1e-16, false), "double-double: so is a zero");
+  CHECK(!rounds_within(near_one, 1 + u, 1 + 2 * u, false), "double-double: outside its interval");
+  // a cancelling square root widens the bound from 2^-40 to 2^-16 of the width
+  CHECK(rounds_within(near_one, 1 - std::ldexp(1.0, -30), 1 + std::ldexp(1.0, -30), false) &&
+          !rounds_within(near_one, 1 - std::ldexp(1.0, -30), 1 + std::ldexp(1.0, -30), true) &&
+          rounds_within(near_one, 1 - std::ldexp(1.0, -40), 1 + std::ldexp(1.0, -40), true),
+        "double-double: the bound of a cancelling square root");
+}
+
 int main()
 {
+  double_double_tests();
   mpfr_interval_tests();
   small_rational_tests();
   nested_root_tests<Nested_root_number, Nested_root_context>();

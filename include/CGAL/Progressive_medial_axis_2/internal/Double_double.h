@@ -10,9 +10,10 @@
 // Author(s)     : The Progressive_medial_axis_2 authors
 //
 // Double-double arithmetic (an unevaluated sum of two doubles, about 106
-// bits): the fast, non-certified stage used by the filtered traits to
-// construct branch points whose double intervals are too wide.  Decisions
-// never use it.
+// bits): the stage the filtered traits use to construct branch points whose
+// double intervals are too wide.  A result is kept only where an error bound
+// taken from the double intervals shows that it rounds to the exact value's
+// double (rounds_within()).  Decisions never use it.
 
 #ifndef CGAL_PROGRESSIVE_MEDIAL_AXIS_2_INTERNAL_DOUBLE_DOUBLE_H
 #define CGAL_PROGRESSIVE_MEDIAL_AXIS_2_INTERNAL_DOUBLE_DOUBLE_H
@@ -128,6 +129,47 @@ private:
   }
   double hi_, lo_;
 };
+
+/// Whether `v`, the double-double result of a computation whose double
+/// interval evaluation (same operations, same branches) encloses the exact
+/// value in `[inf, sup]`, certainly rounds to the same double as the exact
+/// value: every value within an error bound of `v` rounds to the double
+/// `v` rounds to, and that double lies in `[inf, sup]`.  The bound is
+/// `(sup - inf) * 2^-40`, or `(sup - inf) * 2^-16` if the computation took
+/// the square root of a radicand whose interval reaches below half its
+/// upper bound (`root_cancels`).
+///
+/// Why these bounds.  The inputs are doubles, exact in both evaluations.
+/// A double-double operation errs by at most about 2^-100 of its result; an
+/// interval operation that is not exact widens by at least one unit in the
+/// last place, 2^-53 of its result, and one that is exact in doubles is
+/// exact in double-double too.  Both errors then propagate through the
+/// same derivatives, the interval's with absolute values, so the
+/// double-double error stays below the width times about 2^-47: 2^-40
+/// leaves a margin of 2^7.  The one operation that does not propagate
+/// errors linearly is a square root near zero.  A radicand whose interval
+/// stays above half its upper bound is at least its interval's width away
+/// from zero, and the root stays linear to a factor 1.5.  Otherwise the
+/// double-double radicand errs by e at most 2^-47 of the width w, its root
+/// by at most sqrt(e), while the root's interval is wider than
+/// 0.29 sqrt(w): the ratio is at most about 2^-22, and 2^-16 leaves a
+/// margin of 2^6.  A disk construction takes at most one such root (its
+/// other roots are of sums of squares: segment lengths, the radius of a
+/// circle through three points).  Exact values on a rounding boundary (a
+/// zero, the midpoint of two doubles) always fail the test: they are for
+/// exact arithmetic to round.
+inline bool rounds_within(const Double_double& v, double inf, double sup, bool root_cancels)
+{
+  const double d = v.to_double();
+  const double e = (sup - inf) * (root_cancels ? 0x1p-16 : 0x1p-40);
+  if(!std::isfinite(d) || !std::isfinite(e) || !(inf <= d && d <= sup))
+    return false;
+  return (v + Double_double(e)).to_double() == d && (v - Double_double(e)).to_double() == d;
+}
+
+/// Thrown when a coordinate given to a double-double computation is not a
+/// double (an exact number of `Epeck`): its result could not be certified.
+struct Inexact_double_double_input {};
 
 } // namespace internal
 } // namespace Progressive_medial_axes

@@ -154,7 +154,25 @@ struct Triple_relations {
 template <class NT>
 struct Circle_nt {
   NT x, y, r;
+  // (double intervals only) the construction took the square root of a
+  // radicand whose interval reaches below half its upper bound: rounding
+  // errors near such a radicand's zero grow by a square root
+  bool root_cancels = false;
 };
+
+/// Whether the radicand `x` of a disk construction can be close enough to
+/// zero, relative to its rounding errors, for the square root to amplify
+/// them beyond linear propagation: known for double intervals only (see
+/// `rounds_within()` in Double_double.h); false for the other number types.
+template <class NT>
+bool radicand_cancels(const NT&)
+{
+  return false;
+}
+inline bool radicand_cancels(const Interval_nt<false>& x)
+{
+  return !(x.inf() > 0.5 * x.sup());
+}
 
 template <class NT>
 struct Line_nt {
@@ -373,6 +391,7 @@ int circle_pps(const Site_nt<NT>& p, const Site_nt<NT>& q, const Site_nt<NT>& s,
   if(no_root != 0)
     return no_root < 0 ? -1 : 0;
   NT sd = double_root ? NT(0) : nt_sqrt_nonnegative(D);
+  c.root_cancels = !double_root && radicand_cancels(D);
   NT lambda;
   // (a double root is hs / M whatever the sign of hs: D = 0 makes the two
   // forms below equal)
@@ -426,6 +445,7 @@ int circle_pss(const Site_nt<NT>& p, const Site_nt<NT>& s1, const Site_nt<NT>& s
   if(no_root != 0)
     return no_root < 0 ? -1 : 0;
   NT sd = nt_sqrt_nonnegative(disc);
+  c.root_cancels = radicand_cancels(disc);
   const int b_nonnegative = decided(B >= 0);
   if(b_nonnegative < 0)
     return -1;

@@ -82,6 +82,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <limits>
 #include <stdexcept>
 #include <utility>
@@ -415,11 +416,19 @@ public:
                               std::nextafter(std::nextafter(d, HUGE_VAL), HUGE_VAL));
   }
 
-  /// The value rounded to the nearest double (for irrational values, to
-  /// within the rounding of an approximation with at least 128 more bits).
+  /// The value rounded to the nearest double, ties to even.  A number in
+  /// roots can be rational without being a rational polynomial (its roots
+  /// cancel), and then lie exactly halfway between two doubles: the ties of
+  /// symmetric input, whose branch points are midpoints of input points.
+  /// So an approximation near such a midpoint is settled by the exact sign
+  /// of the difference, and a zero by the exact sign of the value.
   double to_double() const
   {
-    if(is_rational()) return CGAL::to_double(internal::to_gmpq(Nested_root_context::rational_value(p_)));
+    if(is_rational()) return nearest_double(internal::to_gmpq(Nested_root_context::rational_value(p_)));
+    // (a zero in roots: its approximations are tiny numbers of either sign;
+    // the sign starts with a double-interval evaluation, which settles all
+    // but values near zero)
+    if(sign() == ZERO) return 0;
     double previous = 0;
     bool first = true;
     for(mpfr_prec_t precision = 192;; precision *= 2) {
@@ -427,11 +436,14 @@ public:
       mpfr_init2(x, precision);
       Nested_root_context::get().approximate(p_, precision, x);
       const double d = mpfr_get_d(x, MPFR_RNDN);
-      mpfr_clear(x);
       // two approximations at precisions far beyond 53 bits that round
-      // to the same double: the rounding is settled
-      if(!first && d == previous) return d;
-      if(precision >= 4096) return d;
+      // to the same double: the rounding is settled, but for a tie
+      if((!first && d == previous) || precision >= 4096) {
+        const double result = settle_tie(x, d, precision);
+        mpfr_clear(x);
+        return result;
+      }
+      mpfr_clear(x);
       previous = d;
       first = false;
     }
@@ -474,6 +486,35 @@ public:
 private:
   struct From {};
   Basic_nested_root_number(From, Root_polynomial&& p) : p_(std::move(p)) {}
+  // d is x rounded to nearest.  If x is within 2^-(precision - 64) of
+  // its size of the midpoint between d and the neighbour on its side, the
+  // exact sign of the value minus that midpoint decides (ties to even).
+  double settle_tie(const mpfr_t x, double d, mpfr_prec_t precision) const
+  {
+    const int side = mpfr_cmp_d(x, d);
+    if(side == 0 || !std::isfinite(d))
+      return d;
+    const double neighbour = std::nextafter(d, side > 0 ? HUGE_VAL : -HUGE_VAL);
+    mpfr_t m;
+    mpfr_init2(m, precision);
+    mpfr_set_d(m, d, MPFR_RNDN);
+    mpfr_add_d(m, m, neighbour, MPFR_RNDN);   // exact: 54 bits
+    mpfr_div_2ui(m, m, 1, MPFR_RNDN);
+    mpfr_sub(m, x, m, MPFR_RNDN);
+    const bool near = mpfr_zero_p(m) || mpfr_get_exp(m) < mpfr_get_exp(x) - (precision - 64);
+    mpfr_clear(m);
+    if(!near)
+      return d;
+    const Nested_root_number midpoint = (Nested_root_number(d) + Nested_root_number(neighbour)) * Nested_root_number(0.5);
+    const Sign s = sign_of_difference(*this, midpoint);
+    if(s == ZERO) {
+      std::int64_t bits;
+      std::memcpy(&bits, &d, sizeof bits);
+      return (bits & 1) == 0 ? d : neighbour;
+    }
+    return (s == POSITIVE) == (side > 0) ? neighbour : d;
+  }
+
   static Nested_root_number from(Root_polynomial&& p) { return Nested_root_number(From(), std::move(p)); }
 
   Root_polynomial p_;

@@ -67,6 +67,17 @@ inline bool rational_square_root(const Gmpq& q, Gmpq& root)
   return true;
 }
 
+/// The double nearest to q (ties to even).
+inline double nearest_double(const Gmpq& q)
+{
+  mpfr_t x;
+  mpfr_init2(x, 53);
+  mpfr_set_q(x, q.mpq(), MPFR_RNDN);
+  const double r = mpfr_get_d(x, MPFR_RNDN);
+  mpfr_clear(x);
+  return r;
+}
+
 /// The value of a rational type as a Gmpq, its sign and an interval.
 inline const Gmpq& to_gmpq(const Gmpq& q) { return q; }
 inline Gmpq to_gmpq(const Small_rational& q) { return q.to_gmpq(); }
@@ -136,25 +147,23 @@ public:
   /// one unit in the last place.
   double to_double() const
   {
-    mpfr_t x;
     const Gmpq a = internal::to_gmpq(a_);
-    if(is_rational()) {
-      mpfr_init2(x, 53);
-      mpfr_set_q(x, a.mpq(), MPFR_RNDN);
-    } else {
-      // a + b sqrt(d) at 256 bits
-      const Gmpq b = internal::to_gmpq(b_), d = internal::to_gmpq(d_);
-      mpfr_t y;
-      mpfr_init2(x, 256);
-      mpfr_init2(y, 256);
-      mpfr_set_q(x, d.mpq(), MPFR_RNDN);
-      mpfr_sqrt(x, x, MPFR_RNDN);
-      mpfr_set_q(y, b.mpq(), MPFR_RNDN);
-      mpfr_mul(x, x, y, MPFR_RNDN);
-      mpfr_set_q(y, a.mpq(), MPFR_RNDN);
-      mpfr_add(x, x, y, MPFR_RNDN);
-      mpfr_clear(y);
-    }
+    if(is_rational())
+      return nearest_double(a);
+    // a + b sqrt(d) at 256 bits (an irrational number is never a tie
+    // between two doubles)
+    mpfr_t x;
+    const Gmpq b = internal::to_gmpq(b_), d = internal::to_gmpq(d_);
+    mpfr_t y;
+    mpfr_init2(x, 256);
+    mpfr_init2(y, 256);
+    mpfr_set_q(x, d.mpq(), MPFR_RNDN);
+    mpfr_sqrt(x, x, MPFR_RNDN);
+    mpfr_set_q(y, b.mpq(), MPFR_RNDN);
+    mpfr_mul(x, x, y, MPFR_RNDN);
+    mpfr_set_q(y, a.mpq(), MPFR_RNDN);
+    mpfr_add(x, x, y, MPFR_RNDN);
+    mpfr_clear(y);
     const double r = mpfr_get_d(x, MPFR_RNDN);
     mpfr_clear(x);
     return r;

@@ -63,7 +63,11 @@
 // point-line-line case multiply a square root that is then zero), so the result is the
 // exact vertex to ~2^-250 relative or better (the square root of an exact zero, rounded, is
 // ~2^-256; typically ~2^-500), and rounding it gives the correctly rounded double unless the
-// exact value is that close to a rounding boundary. Each such vertex is verified (equal
+// exact value is that close to a rounding boundary. A value within 2^-(bits/2 - 40) of the
+// coordinates' scale of 0 or of the midpoint of two doubles is taken to be exactly there
+// (the ties of symmetric and decimal input) and rounded to 0 or to even: the correctly
+// rounded double (ties to even) of every vertex but one that close to a rounding boundary
+// without being on it. Each such vertex is verified (equal
 // distances to its three closed sites, and the side of every segment site agreeing with the
 // combinatorial side); a failure is retried at 2048 bits and then throws std::logic_error.
 // Lengths: straight for segment/segment and point/point pairs, closed-form parabolic arc
@@ -101,6 +105,8 @@
 #include <mpfr.h>
 
 #include <algorithm>
+#include <cstdint>
+#include <cstring>
 #include <chrono>
 #include <cmath>
 #include <cstddef>
@@ -243,6 +249,24 @@ private:
 };
 
 inline double nearest_double(const MT& v) { return mpfr_get_d(v.fr(), MPFR_RNDN); }
+
+/// The double nearest to the exact value that v approximates to within tol, ties to even.
+/// A v within tol of 0, or of the midpoint of two doubles, is taken to be exactly that: the
+/// exact zeros and midpoints of symmetric and decimal input (a point halfway between two
+/// input points), which the approximation alone would round to either side.
+inline double nearest_double(const MT& v, double tol)
+{
+  if(CGAL::compare(CGAL::abs(v), MT(tol)) <= 0) return 0;
+  const double d = nearest_double(v);
+  const CGAL::Comparison_result side = CGAL::compare(v, MT(d));
+  if(side == CGAL::EQUAL || !std::isfinite(d)) return d;
+  const double neighbour = std::nextafter(d, side == CGAL::LARGER ? HUGE_VAL : -HUGE_VAL);
+  const MT midpoint = (MT(d) + MT(neighbour)) / MT(2);   // exact: 54 bits
+  if(CGAL::compare(CGAL::abs(v - midpoint), MT(tol)) > 0) return d;
+  std::int64_t bits;
+  std::memcpy(&bits, &d, sizeof bits);
+  return (bits & 1) == 0 ? d : neighbour;
+}
 
 /// The polygon, converted to doubles, with the exact turn of every vertex.
 struct Polygon_data
@@ -851,9 +875,12 @@ private:
         return false;
       }
     }
-    cx = nearest_double(c.x());
-    cy = nearest_double(c.y());
-    r = nearest_double(CGAL::sqrt(d2[0]));
+    // rounded as exactly as the construction allows: a square root of an exact zero is off by
+    // ~2^-(bits/2) of the scale, the rest by ~2^-bits
+    const double exact_to = std::ldexp(scale, -static_cast<int>(bits / 2 - 40));
+    cx = nearest_double(c.x(), exact_to);
+    cy = nearest_double(c.y(), exact_to);
+    r = nearest_double(CGAL::sqrt(d2[0]), exact_to);
     return true;
   }
 

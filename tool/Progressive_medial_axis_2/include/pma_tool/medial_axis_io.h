@@ -20,6 +20,7 @@
 #include <ostream>
 #include <set>
 #include <string>
+#include <tuple>
 #include <utility>
 #include <vector>
 
@@ -227,17 +228,25 @@ std::vector<Named_branch> named_branches(const Medial_axis& ma, const Names& nam
     const Vertex s = e.source(), t = e.target();
     if(parent.count(s) && parent.count(t) && e.length() <= merge_distance) parent[find(s)] = find(t);
   }
-  std::map<Vertex, std::set<std::string> > groups;
+  // a group is reported at its member of smallest (x, y, r), so that the
+  // output does not depend on the order of the vertices in memory
+  struct Group {
+    std::set<std::string> generators;
+    std::tuple<double, double, double> at;
+  };
+  std::map<Vertex, Group> groups;
   for(const auto& kv : parent) {
-    auto& g = groups[find(kv.first)];
-    for(const auto& gen : kv.first.generators()) g.insert(names(gen));
+    const auto p = Medial_axis::to_xy(kv.first.point());
+    const std::tuple<double, double, double> at(p.first, p.second, CGAL::to_double(kv.first.radius()));
+    const auto inserted = groups.emplace(find(kv.first), Group{{}, at});
+    Group& g = inserted.first->second;
+    if(at < g.at) g.at = at;
+    for(const auto& gen : kv.first.generators()) g.generators.insert(names(gen));
   }
   std::vector<Named_branch> out;
-  for(const auto& kv : groups) {
-    auto p = Medial_axis::to_xy(kv.first.point());
-    out.push_back(Named_branch{std::vector<std::string>(kv.second.begin(), kv.second.end()), p.first, p.second,
-                               CGAL::to_double(kv.first.radius())});
-  }
+  for(const auto& kv : groups)
+    out.push_back(Named_branch{std::vector<std::string>(kv.second.generators.begin(), kv.second.generators.end()),
+                               std::get<0>(kv.second.at), std::get<1>(kv.second.at), std::get<2>(kv.second.at)});
   std::sort(out.begin(), out.end(), [](const Named_branch& x, const Named_branch& y) {
     if(x.generators != y.generators) return x.generators < y.generators;
     return std::make_pair(x.x, x.y) < std::make_pair(y.x, y.y);
