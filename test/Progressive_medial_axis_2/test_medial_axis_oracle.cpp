@@ -226,6 +226,22 @@ public:
           what << " step " << step << ": the maximum inscribed circle at (" << p.first << ", " << p.second
                << ") of radius " << r << " is at distance " << d << " from the boundary");
     CHECK(c.vertex && c.vertex.point() == c.center, what << " step " << step << ": the circle's vertex");
+    // With exact decisions both are the exact points correctly rounded: the
+    // oracle's largest branch point (ties broken by the smallest (x, y)) is
+    // the circle, where both are points of three generators.
+    if(!std::is_same<Traits, CGAL::Progressive_medial_axis_traits_2<CGAL::Epick> >::value || !c.vertex) return;
+    const pma_test::Oracle_branch* top = nullptr;
+    for(const auto& b : oracle.branches)
+      if(!top || b.r > top->r || (b.r == top->r && std::make_pair(b.x, b.y) < std::make_pair(top->x, top->y)))
+        top = &b;
+    std::size_t generators = 0;
+    for(const auto& g : c.vertex.generators()) { (void)g; ++generators; }
+    if(top == nullptr || top->generators.size() != 3 || generators != 3) return;
+    ++circle_comparisons;
+    CHECK(r == top->r && p.first == top->x && p.second == top->y,
+          what << " step " << step << std::setprecision(17) << ": the maximum inscribed circle (" << p.first << ", "
+               << p.second << ") r=" << r << ", the oracle's largest branch point (" << top->x << ", " << top->y
+               << ") r=" << top->r);
   }
 
   // Pruning keeps the topology of the shape: one component, one cycle per
@@ -301,6 +317,7 @@ public:
 
   std::size_t comparisons = 0;
   std::size_t rounding_comparisons = 0;   // branch points compared exactly with the oracle's
+  std::size_t circle_comparisons = 0;     // maximum inscribed circles compared exactly
 };
 
 // Compares the full axis and, with every_step, the axis of every step, or
@@ -1024,7 +1041,7 @@ int run_all(const Options& o)
   }
 #endif
   std::cout << checker.comparisons << " comparisons with the oracle (" << checker.rounding_comparisons
-            << " branch points compared exactly), " << pma_test::failures() << " failures, "
+            << " branch points and " << checker.circle_comparisons << " inscribed circles compared exactly), " << pma_test::failures() << " failures, "
             << std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() << " s\n";
   return pma_test::failures() == 0 ? 0 : 1;
 }
