@@ -914,7 +914,7 @@ public:
   struct Filter_statistics {
     std::size_t interval_evaluations = 0;      ///< times and disks evaluated in double intervals
     std::size_t double_double_evaluations = 0; ///< disks constructed in double-double arithmetic
-    std::size_t mpfr_evaluations = 0;          ///< ... that the double intervals could not decide
+    std::size_t mpfr_evaluations = 0;          ///< ... that neither the double intervals nor double-double settled
     std::size_t rational_evaluations = 0;      ///< ... that were decided in exact one-root numbers
     std::size_t exact_evaluations = 0;         ///< ... that needed the nested-root numbers
     std::size_t mpfr_comparisons = 0;          ///< comparisons of times decided by MPFR intervals
