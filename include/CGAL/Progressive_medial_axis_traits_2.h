@@ -1107,41 +1107,71 @@ private:
   {
     Progressive_medial_axes::internal::Triple_relations rel = Progressive_medial_axes::internal::triple_relations<CK>(s);
     ++filter_statistics().interval_evaluations;
+    // Each of x, y and r is settled by the first stage that can round it:
+    // a tie in one coordinate (a centre halfway between two input points)
+    // sends only that coordinate on to the exact numbers.
+    double value[3];
+    bool settled[3] = {false, false, false};
+    auto finish = [&]() {
+      if(!(settled[0] && settled[1] && settled[2]))
+        return false;
+      centre = point_of_doubles(value[0], value[1]);
+      radius = value[2];
+      return true;
+    };
+    // the coordinates not settled yet, from a circle of an exact number type
+    auto round_exactly = [&](const auto& circle) {
+      typedef std::decay_t<decltype(circle.x)> N;
+      const N* c[3] = {&circle.x, &circle.y, &circle.r};
+      double v[3];
+      for(int i = 0; i < 3; ++i)
+        v[i] = settled[i] ? value[i] : c[i]->to_double();
+      for(int i = 0; i < 3; ++i) {
+        value[i] = v[i];
+        settled[i] = true;
+      }
+      return finish();
+    };
     bool branches_decided = false;
     Progressive_medial_axes::internal::Circle_nt<Interval> enclosure;
+    const Interval* enclosed[3] = {&enclosure.x, &enclosure.y, &enclosure.r};
     {
       const int found = interval_disk(s, rel, enclosure);
       if(found == 0)
         return false;
       branches_decided = found > 0;
-      if(branches_decided && enclosure.x.is_point() && enclosure.y.is_point() && enclosure.r.is_point() &&
-         std::isfinite(enclosure.x.inf()) && std::isfinite(enclosure.y.inf()) && std::isfinite(enclosure.r.inf())) {
-        centre = point_of_doubles(enclosure.x.inf(), enclosure.y.inf());
-        radius = enclosure.r.inf();
+      if(branches_decided)
+        for(int i = 0; i < 3; ++i)
+          if(enclosed[i]->is_point() && std::isfinite(enclosed[i]->inf())) {
+            value[i] = enclosed[i]->inf();
+            settled[i] = true;
+          }
+      if(finish())
         return true;
-      }
     }
     if(branches_decided) {
       // The intervals took every branch: the same computation in
-      // double-double arithmetic (about 106 bits).  Its result is kept only
-      // if it rounds to the same double as every value within an error
-      // bound of it; else the disk goes on to the MPFR stage, and exact
-      // values on a rounding boundary (zeros, midpoints of two doubles: the
-      // ties of symmetric and decimal input) to the exact stages, so that
-      // the disk is always the exact one correctly rounded.  Coordinates far
-      // from 1 (near 1e150 and beyond) overflow its products and go on too.
+      // double-double arithmetic (about 106 bits).  A coordinate is kept
+      // only if it rounds to the same double as every value within an error
+      // bound of it; else it goes on to the MPFR stage, and exact values on
+      // a rounding boundary (zeros, midpoints of two doubles: the ties of
+      // symmetric and decimal input) to the exact stages, so that the disk
+      // is always the exact one correctly rounded.  Coordinates far from 1
+      // (near 1e150 and beyond) overflow its products and go on too.
       ++filter_statistics().double_double_evaluations;
-      using Progressive_medial_axes::internal::rounds_within;
       Progressive_medial_axes::internal::Circle_nt<Progressive_medial_axes::internal::Double_double> circle;
-      const bool cancels = enclosure.root_cancels;
       try {
-        if(disk_nt<Progressive_medial_axes::internal::Double_double>(s, rel, circle) &&
-           rounds_within(circle.x, enclosure.x.inf(), enclosure.x.sup(), cancels) &&
-           rounds_within(circle.y, enclosure.y.inf(), enclosure.y.sup(), cancels) &&
-           rounds_within(circle.r, enclosure.r.inf(), enclosure.r.sup(), cancels)) {
-          centre = point_of_doubles(circle.x.to_double(), circle.y.to_double());
-          radius = circle.r.to_double();
-          return true;
+        if(disk_nt<Progressive_medial_axes::internal::Double_double>(s, rel, circle)) {
+          const Progressive_medial_axes::internal::Double_double* c[3] = {&circle.x, &circle.y, &circle.r};
+          for(int i = 0; i < 3; ++i)
+            if(!settled[i] &&
+               Progressive_medial_axes::internal::rounds_within(*c[i], enclosed[i]->inf(), enclosed[i]->sup(),
+                                                                enclosure.root_cancels)) {
+              value[i] = c[i]->to_double();
+              settled[i] = true;
+            }
+          if(finish())
+            return true;
         }
       } catch(Progressive_medial_axes::internal::Inexact_double_double_input&) {
       }
@@ -1152,10 +1182,14 @@ private:
         Progressive_medial_axes::internal::Circle_nt<Mpfr> circle;
         if(!disk_nt<Mpfr>(s, rel, circle))
           return false;
-        if(!circle.x.rounds_to_one_double() || !circle.y.rounds_to_one_double() || !circle.r.rounds_to_one_double())
+        const Mpfr* c[3] = {&circle.x, &circle.y, &circle.r};
+        for(int i = 0; i < 3; ++i)
+          if(!settled[i] && c[i]->rounds_to_one_double()) {
+            value[i] = c[i]->midpoint();
+            settled[i] = true;
+          }
+        if(!finish())
           return std::nullopt;
-        centre = point_of_doubles(circle.x.midpoint(), circle.y.midpoint());
-        radius = circle.r.midpoint();
         return true;
       },
       [&]() -> std::optional<bool> {
@@ -1165,9 +1199,7 @@ private:
           if(!disk_nt<N>(s, rel, circle))
             return false;
           ++filter_statistics().rational_evaluations;
-          centre = point_of_doubles(circle.x.to_double(), circle.y.to_double());
-          radius = circle.r.to_double();
-          return true;
+          return round_exactly(circle);
         };
         return with_one_root_numbers(one_root);
       }, short_coordinates(s, s));
@@ -1179,9 +1211,7 @@ private:
       Progressive_medial_axes::internal::Circle_nt<N> circle;
       if(!disk_nt<N>(s, rel, circle))
         return false;
-      centre = point_of_doubles(circle.x.to_double(), circle.y.to_double());
-      radius = circle.r.to_double();
-      return true;
+      return round_exactly(circle);
     });
   }
 
