@@ -1123,13 +1123,11 @@ private:
     auto round_exactly = [&](const auto& circle) {
       typedef std::decay_t<decltype(circle.x)> N;
       const N* c[3] = {&circle.x, &circle.y, &circle.r};
-      double v[3];
       for(int i = 0; i < 3; ++i)
-        v[i] = settled[i] ? value[i] : c[i]->to_double();
-      for(int i = 0; i < 3; ++i) {
-        value[i] = v[i];
-        settled[i] = true;
-      }
+        if(!settled[i]) {
+          value[i] = c[i]->to_double();
+          settled[i] = true;
+        }
       return finish();
     };
     bool branches_decided = false;

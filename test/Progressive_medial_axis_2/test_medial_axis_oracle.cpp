@@ -160,7 +160,7 @@ public:
     const bool touching = std::adjacent_find(all.begin(), all.end()) != all.end();
     check_invariants(ma, step, what, shape_xy, oracle.bbox_diagonal, int(shape.size()) - 1, !touching);
     check_inscribed_circle(ma, step, what, oracle, shape_xy);
-    if(std::is_same<Traits, CGAL::Progressive_medial_axis_traits_2<CGAL::Epick> >::value)
+    if(correctly_rounded)
       check_rounding(ma, names, step, what, oracle);
     if(input_names && !touching) check_pruning(ma, step, what, int(shape.size()) - 1);
     ++comparisons;
@@ -229,7 +229,7 @@ public:
     // With exact decisions both are the exact points correctly rounded: the
     // oracle's largest branch point (ties broken by the smallest (x, y)) is
     // the circle, where both are points of three generators.
-    if(!std::is_same<Traits, CGAL::Progressive_medial_axis_traits_2<CGAL::Epick> >::value || !c.vertex) return;
+    if(!correctly_rounded || !c.vertex) return;
     const pma_test::Oracle_branch* top = nullptr;
     for(const auto& b : oracle.branches)
       if(!top || b.r > top->r || (b.r == top->r && std::make_pair(b.x, b.y) < std::make_pair(top->x, top->y)))
@@ -314,6 +314,10 @@ public:
       }
     }
   }
+
+  // the default model (exact decisions): its branch points are the exact
+  // points correctly rounded, comparable exactly with the oracle's
+  static constexpr bool correctly_rounded = std::is_same<Traits, CGAL::Progressive_medial_axis_traits_2<CGAL::Epick> >::value;
 
   std::size_t comparisons = 0;
   std::size_t rounding_comparisons = 0;   // branch points compared exactly with the oracle's
