@@ -94,6 +94,30 @@ inline std::size_t number_of_parts(std::size_t n, std::size_t least = 65536)
   return 1;
 }
 
+// Writes the indices i of [0, n) with keep(i), in their order, after `first`
+// entries of an array: resize(total) sizes the array to `first` plus their
+// number, then write(i, k) writes i at position k.  The indices are counted,
+// then written, in parallel parts (see number_of_parts()).
+template <class Keep, class Resize, class Write>
+void parallel_compact(std::size_t n, std::size_t first, const Keep& keep, const Resize& resize, const Write& write)
+{
+  const std::size_t parts = number_of_parts(n);
+  std::vector<std::size_t> part_first(parts + 1, 0);
+  parallel_parts(n, parts, [&](std::size_t part, std::size_t b, std::size_t e) {
+    std::size_t c = 0;
+    for(std::size_t i = b; i < e; ++i) c += std::size_t(bool(keep(i)));
+    part_first[part + 1] = c;
+  });
+  part_first[0] = first;
+  for(std::size_t p = 0; p < parts; ++p) part_first[p + 1] += part_first[p];
+  resize(part_first[parts]);
+  parallel_parts(n, parts, [&](std::size_t part, std::size_t b, std::size_t e) {
+    std::size_t k = part_first[part];
+    for(std::size_t i = b; i < e; ++i)
+      if(keep(i)) write(i, k++);
+  });
+}
+
 // A hint that the record at p is read soon: for the passes of the analysis
 // over a tree, whose reads jump around memory in an order known ahead.
 inline void prefetch(const void* p)
@@ -626,6 +650,14 @@ public:
     Progressive_medial_axes::internal::parallel_blocks(m, [&](std::size_t b, std::size_t e) {
       for(std::size_t k = b; k < e; ++k) {
         const int h = curves[k];
+        if(k + 16 < e) {   // the vertices and cells of a curve further on, read in no order
+          const int g = curves[k + 16];
+          Progressive_medial_axes::internal::prefetch(&d->hds.vertex(d->hds.source(g)));
+          Progressive_medial_axes::internal::prefetch(&d->hds.vertex(d->hds.target(g)));
+          const int f0 = d->hds.face_of(g), f1 = d->hds.face_of(g ^ 1);
+          if(f0 >= 0) Progressive_medial_axes::internal::prefetch(&d->hds.face(f0));
+          if(f1 >= 0) Progressive_medial_axes::internal::prefetch(&d->hds.face(f1));
+        }
         ends[k] = {{representative_of(d->hds.source(h)), representative_of(d->hds.target(h))}};
         lengths[k] = curve(d, h).length();
         if(radii)

@@ -484,20 +484,21 @@ public:
   /// A kept part of a curve.
   struct Curve {
     Halfedge_handle halfedge;  ///< the curve, with its direction
-    Vertex_handle source, target; ///< `halfedge.source()` and `halfedge.target()`
     double begin = 0, end = 0; ///< the kept part, arc lengths from `halfedge.source()`
     double full_length = 0;    ///< `halfedge.length()`
     double et_begin = 0, et_end = 0; ///< the erosion thickness at both ends (may be infinite)
     bool cut_at_begin() const { return begin > 0; }
     bool cut_at_end() const { return end < full_length; }
     double length() const { return end - begin; }
+    Vertex_handle source() const { return halfedge.source(); } ///< `halfedge.source()`
+    Vertex_handle target() const { return halfedge.target(); } ///< `halfedge.target()`
     std::pair<double, double> begin_point() const
     {
-      return cut_at_begin() ? halfedge.point_at(begin) : Medial_axis::to_xy(source.point());
+      return cut_at_begin() ? halfedge.point_at(begin) : Medial_axis::to_xy(source().point());
     }
     std::pair<double, double> end_point() const
     {
-      return cut_at_end() ? halfedge.point_at(end) : Medial_axis::to_xy(target.point());
+      return cut_at_end() ? halfedge.point_at(end) : Medial_axis::to_xy(target().point());
     }
   };
 
@@ -635,8 +636,6 @@ Pruned_medial_axis_2<K> prune_medial_axis_2(const Medial_axis_significance_2<K>&
   auto add_curve = [&](const Arc& a, double b, double e) {
     Curve c;
     c.halfedge = sig.halfedge(a);
-    c.source = sig.vertex(a.u);
-    c.target = sig.vertex(a.w);
     c.full_length = a.length;
     c.begin = (std::max)(0.0, b);
     c.end = (std::min)(a.length, e);
@@ -690,16 +689,37 @@ Pruned_medial_axis_2<K> prune_medial_axis_2(const Medial_axis_significance_2<K>&
       else add_curve(a, 0, c);
     }
   }
-  // curves between nodes that never burn
-  for(std::size_t i = 0; i < arcs.size(); ++i)
-    if(arcs[i].start[0] == inf && arcs[i].start[1] == inf) add_curve(arcs[i], 0, arcs[i].length);
+  // The curves that no front enters, whole.  Their ends never burn (every
+  // curve at a node that burns carries a front), so their records are
+  // written without reading the nodes.  They are most of the axis of a
+  // shape with many holes: counted, then written in parallel parts, in the
+  // order of the arcs.
+  const std::size_t before = out.curves_.size();
+  Progressive_medial_axes::internal::parallel_compact(
+    arcs.size(), before, [&](std::size_t i) { return arcs[i].start[0] == inf && arcs[i].start[1] == inf; },
+    [&](std::size_t total) {
+      out.curves_.resize(total);
+      out.links_.resize(total);
+    },
+    [&](std::size_t i, std::size_t k) {
+      const Arc& a = arcs[i];
+      Curve& c = out.curves_[k];
+      c.halfedge = sig.halfedge(a);
+      c.begin = 0;
+      c.end = c.full_length = a.length;
+      c.et_begin = c.et_end = inf;
+      out.links_[k] = {a.u, a.w, a.length};
+    });
+  whole += out.curves_.size() - before;
+  // the kept vertices, in the order of the nodes, the same way
   out.kept_.assign(sig.medial_axis().vertex_id_bound(), 0);
-  out.vertices_.reserve(nodes.size());
-  for(int v = 0; v < int(nodes.size()); ++v)
-    if(kept[v]) {
-      out.vertices_.push_back(sig.vertex(v));
-      out.kept_[std::size_t(nodes[v].vertex)] = 1;
-    }
+  Progressive_medial_axes::internal::parallel_compact(
+    nodes.size(), 0, [&](std::size_t v) { return kept[v] != 0; },
+    [&](std::size_t total) { out.vertices_.resize(total); },
+    [&](std::size_t v, std::size_t k) {
+      out.vertices_[k] = sig.vertex(int(v));
+      out.kept_[std::size_t(nodes[v].vertex)] = 1;   // (distinct nodes have distinct vertices)
+    });
   out.pruned_ = arcs.size() - whole;
   return out;
 }
