@@ -20,6 +20,8 @@
 #include <CGAL/number_utils.h>
 #include <CGAL/enum.h>
 
+#include <boost/container/vector.hpp>
+
 #if defined(CGAL_LINKED_WITH_TBB) && !defined(CGAL_PMA2_NO_TBB)
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
@@ -116,6 +118,19 @@ void parallel_compact(std::size_t n, std::size_t first, const Keep& keep, const 
     for(std::size_t i = b; i < e; ++i)
       if(keep(i)) write(i, k++);
   });
+}
+
+// A vector of n copies of `value`, written in parallel blocks: the pages of
+// a large fresh array are then faulted in by all the threads rather than by
+// one (for the large arrays of the analysis).
+template <class T>
+boost::container::vector<T> parallel_filled(std::size_t n, const T& value)
+{
+  boost::container::vector<T> v(n, boost::container::default_init);
+  parallel_blocks(n, [&](std::size_t b, std::size_t e) {
+    std::fill(v.begin() + std::ptrdiff_t(b), v.begin() + std::ptrdiff_t(e), value);
+  });
+  return v;
 }
 
 // A hint that the record at p is read soon: for the passes of the analysis

@@ -16,6 +16,8 @@
 
 #include <CGAL/Progressive_medial_axis_2/Medial_axis_significance_2.h>
 
+#include <boost/container/vector.hpp>
+
 #include <algorithm>
 #include <array>
 #include <atomic>
@@ -314,9 +316,11 @@ Medial_axis_centerline_2<K> medial_axis_centerline_2(const Pruned_medial_axis_2<
   // walks read); half is 2 * link, plus 1 at the link's node b (a path
   // leaving the node there walks the curve backwards)
   struct Near { int node, half; };
-  std::vector<Near> near(2 * links.size());
+  // (not initialised: the parts below write every entry, each its own
+  // pages first, so that the pages are faulted in by both threads)
+  boost::container::vector<Near> near(2 * links.size(), boost::container::default_init);
   // the incidences of each link at its nodes a and b
-  std::vector<std::array<int, 2> > link_at(links.size());
+  boost::container::vector<std::array<int, 2> > link_at(links.size(), boost::container::default_init);
   {
     std::vector<int> fill(first.begin(), first.end() - 1);
     Progressive_medial_axes::internal::parallel_parts(std::size_t(n_nodes), parts, [&](std::size_t, std::size_t b, std::size_t e) {
@@ -463,7 +467,7 @@ Medial_axis_centerline_2<K> medial_axis_centerline_2(const Pruned_medial_axis_2<
   // a walk reads one place instead of the node's degree, its incidences and
   // their links' states.
   auto live = [&](int k) { return !removed_link[std::size_t(at(k))]; };
-  std::vector<int> next(near.size(), -1);
+  auto next = Progressive_medial_axes::internal::parallel_filled(near.size(), -1);
   Progressive_medial_axes::internal::parallel_blocks(std::size_t(n_nodes), [&](std::size_t b, std::size_t e) {
     for(std::size_t v = b; v < e; ++v) {
       if(degree_left[v] != 2) continue;

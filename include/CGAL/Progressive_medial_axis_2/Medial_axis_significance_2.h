@@ -237,14 +237,15 @@ private:
     std::vector<std::array<double, 2> > radii;
     ma_.medial_curve_graph(curves, ends, lengths, &radii);
     const std::size_t m = curves.size();
-    vertex_map_.assign(ma_.vertex_id_bound(), -1);
+    using Progressive_medial_axes::internal::parallel_filled;
+    vertex_map_ = parallel_filled(ma_.vertex_id_bound(), -1);
     arcs_.resize(m, boost::container::default_init);
     // nodes in the order in which the curves reach them; the degrees and
     // the incidences are counted in small arrays of their own, not in the
     // nodes' records.  Without branches: whether a curve reaches a node first
     // follows no pattern a branch predictor could learn.
-    std::vector<int> node_vertex(2 * m + 1), count(2 * m + 2, 0);
-    std::vector<double> node_radius(2 * m + 1);
+    auto node_vertex = parallel_filled(2 * m + 1, 0), count = parallel_filled(2 * m + 2, 0);
+    auto node_radius = parallel_filled(2 * m + 1, 0.0);
     int n_nodes = 0;
     auto node = [&](int v, double radius) {
       const int i = vertex_map_[std::size_t(v)];
@@ -281,7 +282,7 @@ private:
         x.meets = x.ignited = false;
       }
     });
-    incidence_.resize(std::size_t(count[n]));
+    incidence_ = parallel_filled(std::size_t(count[n]), 0);
     for(int i = 0; i < int(m); ++i) {
       const Arc& a = arcs_[std::size_t(i)];
       incidence_[std::size_t(count[std::size_t(a.u)]++)] = i;
@@ -393,7 +394,7 @@ private:
       x.down = t + parent_length(x);
     }
     // ignition: the latest arrival but one, and the curve of the latest
-    std::vector<int> to(n, -1);   // the node the front of a node reaches, if it burns (compact, for the last pass)
+    auto to = Progressive_medial_axes::internal::parallel_filled(n, -1);   // the node the front of a node reaches, if it burns (compact, for the last pass)
     last_time_ = 0;
     for(std::size_t i = 0; i < peel.size(); ++i) {
       if(i + 8 < peel.size()) {
@@ -458,9 +459,9 @@ private:
   Medial_axis ma_;
   Node_vector vertices_;
   Arc_vector arcs_;
-  std::vector<int> incidence_;
+  boost::container::vector<int> incidence_;
   std::vector<int> order_;
-  std::vector<int> vertex_map_;   // by id number
+  boost::container::vector<int> vertex_map_;   // by id number
   double last_time_ = 0;
   double largest_radius_ = 0;
 };
