@@ -1112,7 +1112,15 @@ private:
     // sends only that coordinate on to the exact numbers.
     double value[3];
     bool settled[3] = {false, false, false};
-    auto finish = [&]() {
+    // settles each coordinate i not settled yet that a stage can round
+    // (rounds(i)), at rounded(i); once all three are, sets the disk and
+    // returns true
+    auto settle = [&](const auto& rounds, const auto& rounded) {
+      for(int i = 0; i < 3; ++i)
+        if(!settled[i] && rounds(i)) {
+          value[i] = rounded(i);
+          settled[i] = true;
+        }
       if(!(settled[0] && settled[1] && settled[2]))
         return false;
       centre = point_of_doubles(value[0], value[1]);
@@ -1123,12 +1131,7 @@ private:
     auto round_exactly = [&](const auto& circle) {
       typedef std::decay_t<decltype(circle.x)> N;
       const N* c[3] = {&circle.x, &circle.y, &circle.r};
-      for(int i = 0; i < 3; ++i)
-        if(!settled[i]) {
-          value[i] = c[i]->to_double();
-          settled[i] = true;
-        }
-      return finish();
+      return settle([](int) { return true; }, [&](int i) { return c[i]->to_double(); });
     };
     bool branches_decided = false;
     Progressive_medial_axes::internal::Circle_nt<Interval> enclosure;
@@ -1138,13 +1141,9 @@ private:
       if(found == 0)
         return false;
       branches_decided = found > 0;
-      if(branches_decided)
-        for(int i = 0; i < 3; ++i)
-          if(enclosed[i]->is_point() && std::isfinite(enclosed[i]->inf())) {
-            value[i] = enclosed[i]->inf();
-            settled[i] = true;
-          }
-      if(finish())
+      if(branches_decided &&
+         settle([&](int i) { return enclosed[i]->is_point() && std::isfinite(enclosed[i]->inf()); },
+                [&](int i) { return enclosed[i]->inf(); }))
         return true;
     }
     if(branches_decided) {
@@ -1161,14 +1160,12 @@ private:
       try {
         if(disk_nt<Progressive_medial_axes::internal::Double_double>(s, rel, circle)) {
           const Progressive_medial_axes::internal::Double_double* c[3] = {&circle.x, &circle.y, &circle.r};
-          for(int i = 0; i < 3; ++i)
-            if(!settled[i] &&
-               Progressive_medial_axes::internal::rounds_within(*c[i], enclosed[i]->inf(), enclosed[i]->sup(),
-                                                                enclosure.root_cancels)) {
-              value[i] = c[i]->to_double();
-              settled[i] = true;
-            }
-          if(finish())
+          if(settle(
+               [&](int i) {
+                 return Progressive_medial_axes::internal::rounds_within(*c[i], enclosed[i]->inf(), enclosed[i]->sup(),
+                                                                         enclosure.root_cancels);
+               },
+               [&](int i) { return c[i]->to_double(); }))
             return true;
         }
       } catch(Progressive_medial_axes::internal::Inexact_double_double_input&) {
@@ -1181,12 +1178,7 @@ private:
         if(!disk_nt<Mpfr>(s, rel, circle))
           return false;
         const Mpfr* c[3] = {&circle.x, &circle.y, &circle.r};
-        for(int i = 0; i < 3; ++i)
-          if(!settled[i] && c[i]->rounds_to_one_double()) {
-            value[i] = c[i]->midpoint();
-            settled[i] = true;
-          }
-        if(!finish())
+        if(!settle([&](int i) { return c[i]->rounds_to_one_double(); }, [&](int i) { return c[i]->midpoint(); }))
           return std::nullopt;
         return true;
       },
