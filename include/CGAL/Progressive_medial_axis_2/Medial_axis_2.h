@@ -30,6 +30,7 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <cmath>
 #include <cstddef>
 #include <functional>
@@ -607,10 +608,16 @@ public:
   // of edges(), `ends` the id numbers of its source and target vertices,
   // `lengths` its length(), `radii` (if given) the radii at its ends in
   // double (read with the points).  The passes run in parallel where TBB is
-  // linked and the kernel's numbers are doubles.
-  void medial_curve_graph(std::vector<int>& curves, std::vector<std::array<int, 2> >& ends,
-                          std::vector<double>& lengths, std::vector<std::array<double, 2> >* radii = nullptr) const
+  // linked and the kernel's numbers are doubles.  (The arrays are not
+  // initialised before they are written: they are large, and their pages
+  // are then first touched by the passes, in parallel.)
+  void medial_curve_graph(boost::container::vector<int>& curves, boost::container::vector<std::array<int, 2> >& ends,
+                          boost::container::vector<double>& lengths,
+                          boost::container::vector<std::array<double, 2> >* radii = nullptr) const
   {
+    using Progressive_medial_axes::internal::parallel_blocks;
+    using Progressive_medial_axes::internal::parallel_compact;
+    const auto no_init = boost::container::default_init;
     curves.clear();
     ends.clear();
     lengths.clear();
@@ -621,34 +628,31 @@ public:
     // (the passes read the points and radii: in parallel only for doubles)
     const bool plain_numbers = std::is_floating_point<FT>::value;
     // 1: a medial curve, 2: an edge of length zero (its ends are one point)
-    std::vector<char> kind(pairs);
-    Progressive_medial_axes::internal::parallel_blocks(pairs, [&](std::size_t b, std::size_t e) {
+    boost::container::vector<char> kind(pairs, no_init);
+    std::atomic<bool> any_zero(false);
+    parallel_blocks(pairs, [&](std::size_t b, std::size_t e) {
+      bool zero = false;
       for(std::size_t i = b; i < e; ++i) {
         const int h = int(2 * i);
         kind[i] = keep_edge(d, h) ? 1 : (!d->hds.is_deleted(h) && d->hds.is_zero_length(h) ? 2 : 0);
+        zero = zero || kind[i] == 2;
       }
+      if(zero) any_zero.store(true, std::memory_order_relaxed);
     }, plain_numbers);
-    // (without branches: the kinds follow no pattern a branch predictor
-    // could learn, and these loops run over every pair of half-edges)
+    // the curves, and the ends of the edges of length zero (rare), in the
+    // order of the pairs: counted, then written, in parallel parts
+    parallel_compact(pairs, 0, [&](std::size_t i) { return kind[i] == 1; },
+                     [&](std::size_t total) { curves.resize(total, no_init); },
+                     [&](std::size_t i, std::size_t k) { curves[k] = int(2 * i); });
     std::vector<int> zero_length_ends;
-    std::size_t m = 0, zero = 0;
-    for(std::size_t i = 0; i < pairs; ++i) {
-      m += std::size_t(kind[i] == 1);
-      zero += std::size_t(kind[i] == 2);
-    }
-    curves.resize(m + 1);   // a spare slot: a pair that is no curve is written there, then overwritten
-    std::size_t k = 0;
-    for(std::size_t i = 0; i < pairs; ++i) {
-      curves[k] = int(2 * i);
-      k += std::size_t(kind[i] == 1);
-    }
-    curves.pop_back();
-    if(zero > 0)
-      for(std::size_t i = 0; i < pairs; ++i)
-        if(kind[i] == 2) {
-          zero_length_ends.push_back(d->hds.source(int(2 * i)));
-          zero_length_ends.push_back(d->hds.target(int(2 * i)));
-        }
+    if(any_zero.load())
+      parallel_compact(pairs, 0, [&](std::size_t i) { return kind[i] == 2; },
+                       [&](std::size_t total) { zero_length_ends.resize(2 * total); },
+                       [&](std::size_t i, std::size_t k) {
+                         zero_length_ends[2 * k] = d->hds.source(int(2 * i));
+                         zero_length_ends[2 * k + 1] = d->hds.target(int(2 * i));
+                       });
+    const std::size_t m = curves.size();
     // the representatives of the vertices at edges of length zero (rare);
     // every other vertex stands for itself
     std::vector<std::pair<int, int> > rep;
@@ -659,10 +663,10 @@ public:
       const auto it = std::lower_bound(rep.begin(), rep.end(), std::make_pair(v, (std::numeric_limits<int>::min)()));
       return it != rep.end() && it->first == v ? it->second : v;
     };
-    ends.resize(m);
-    lengths.resize(m);
-    if(radii) radii->resize(m);
-    Progressive_medial_axes::internal::parallel_blocks(m, [&](std::size_t b, std::size_t e) {
+    ends.resize(m, no_init);
+    lengths.resize(m, no_init);
+    if(radii) radii->resize(m, no_init);
+    parallel_blocks(m, [&](std::size_t b, std::size_t e) {
       for(std::size_t k = b; k < e; ++k) {
         const int h = curves[k];
         if(k + 16 < e) {   // the vertices and cells of a curve further on, read in no order

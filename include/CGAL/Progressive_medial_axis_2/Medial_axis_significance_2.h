@@ -22,6 +22,7 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -179,7 +180,7 @@ public:
     double radius;
     double time;         // infinite until it catches fire
     int vertex;          // its id number in the axis
-    int first, degree;   // incident curves: incidence_[first, first + degree)
+    int degree;          // the number of its curves (a loop counts twice)
     int out;             // the curve the fire goes on into (-1 if none)
     int far;             // the node at its other end (-1 if none)
     double out_length;   // its length
@@ -204,9 +205,6 @@ public:
   const std::vector<int>& order_of_fire() const { return order_; }
   Vertex_handle vertex(int node) const { return ma_.vertex_of_id(std::size_t(vertices_[node].vertex)); }
   Halfedge_handle halfedge(const Arc& a) const { return ma_.halfedge_of_id(std::size_t(a.halfedge)); }
-  // the curves at node v
-  const int* arcs_begin(int v) const { return incidence_.data() + vertices_[v].first; }
-  const int* arcs_end(int v) const { return incidence_.data() + vertices_[v].first + vertices_[v].degree; }
   int vertex_index(const Vertex_handle& v) const { return checked(v.id_number() < vertex_map_.size() ? vertex_map_[v.id_number()] : -1); }
   int edge_index(const Halfedge_handle& h) const
   {
@@ -231,63 +229,64 @@ private:
   // The graph from the arrays of the axis (Medial_axis_2::medial_curve_graph()).
   void build()
   {
-    std::vector<int> curves;
-    std::vector<std::array<int, 2> > ends;
-    std::vector<double> lengths;
-    std::vector<std::array<double, 2> > radii;
+    using Progressive_medial_axes::internal::parallel_blocks;
+    using Progressive_medial_axes::internal::parallel_filled;
+    boost::container::vector<int> curves;
+    boost::container::vector<std::array<int, 2> > ends;
+    boost::container::vector<double> lengths;
+    boost::container::vector<std::array<double, 2> > radii;
     ma_.medial_curve_graph(curves, ends, lengths, &radii);
     const std::size_t m = curves.size();
-    using Progressive_medial_axes::internal::parallel_filled;
     vertex_map_ = parallel_filled(ma_.vertex_id_bound(), -1);
-    arcs_.resize(m, boost::container::default_init);
-    // nodes in the order in which the curves reach them; the degrees and
-    // the incidences are counted in small arrays of their own, not in the
-    // nodes' records.  Without branches: whether a curve reaches a node first
-    // follows no pattern a branch predictor could learn.
-    auto node_vertex = parallel_filled(2 * m + 1, 0), count = parallel_filled(2 * m + 2, 0);
-    auto node_radius = parallel_filled(2 * m + 1, 0.0);
+    // Nodes in the order in which the curves reach them, numbered in one
+    // pass that reads only the ends and writes, for each node, its first
+    // end (2 k + 0 or 1 for the source or target of curve k) and its
+    // degree; the records are written after it, in parallel.  Without
+    // branches: whether a curve reaches a node first follows no pattern a
+    // branch predictor could learn.
+    auto first_end = parallel_filled(2 * m + 1, 0), count = parallel_filled(2 * m + 2, 0);
     int n_nodes = 0;
-    auto node = [&](int v, double radius) {
-      const int i = vertex_map_[std::size_t(v)];
-      const int j = i < 0 ? n_nodes : i;
-      vertex_map_[std::size_t(v)] = j;
-      node_vertex[std::size_t(n_nodes)] = v;   // kept if the node is new
-      node_radius[std::size_t(n_nodes)] = radius;
-      n_nodes += int(i < 0);
-      largest_radius_ = (std::max)(largest_radius_, radius);
-      ++count[std::size_t(j) + 1];
-      return j;
-    };
-    for(std::size_t k = 0; k < m; ++k) {
-      Arc& a = arcs_[k];
-      a.halfedge = curves[k];
-      a.u = node(ends[k][0], radii[k][0]);
-      a.w = node(ends[k][1], radii[k][1]);
-      a.length = lengths[k];
-      a.start[0] = a.start[1] = infinity();
-    }
+    for(std::size_t k = 0; k < m; ++k)
+      for(std::size_t s = 0; s < 2; ++s) {
+        const std::size_t v = std::size_t(ends[k][s]);
+        const int i = vertex_map_[v];
+        const int j = i < 0 ? n_nodes : i;
+        vertex_map_[v] = j;
+        first_end[std::size_t(n_nodes)] = int(2 * k + s);   // kept if the node is new
+        n_nodes += int(i < 0);
+        ++count[std::size_t(j) + 1];
+      }
+    arcs_.resize(m, boost::container::default_init);
+    parallel_blocks(m, [&](std::size_t b, std::size_t e) {
+      for(std::size_t k = b; k < e; ++k) {
+        Arc& a = arcs_[k];
+        a.halfedge = curves[k];
+        a.u = vertex_map_[std::size_t(ends[k][0])];
+        a.w = vertex_map_[std::size_t(ends[k][1])];
+        a.length = lengths[k];
+        a.start[0] = a.start[1] = infinity();
+      }
+    });
     const std::size_t n = std::size_t(n_nodes);
-    for(std::size_t v = 0; v < n; ++v) count[v + 1] += count[v];   // the first incidence of each node
     vertices_.resize(n, boost::container::default_init);
-    Progressive_medial_axes::internal::parallel_blocks(n, [&](std::size_t b, std::size_t e) {
+    std::atomic<double> largest(0.0);
+    parallel_blocks(n, [&](std::size_t b, std::size_t e) {
+      double r = 0;
       for(std::size_t i = b; i < e; ++i) {
+        const std::size_t o = std::size_t(first_end[i]);
         Node& x = vertices_[i];
-        x.radius = node_radius[i];
+        x.radius = radii[o / 2][o % 2];
         x.time = infinity();
-        x.vertex = node_vertex[i];
-        x.first = count[i];
-        x.degree = count[i + 1] - count[i];
+        x.vertex = ends[o / 2][o % 2];
+        x.degree = count[i + 1];
         x.out = x.far = -1;
         x.out_length = 0;
         x.meets = x.ignited = false;
+        r = (std::max)(r, x.radius);
       }
+      for(double l = largest.load(); r > l && !largest.compare_exchange_weak(l, r);) {}
     });
-    incidence_ = parallel_filled(std::size_t(count[n]), 0);
-    for(int i = 0; i < int(m); ++i) {
-      const Arc& a = arcs_[std::size_t(i)];
-      incidence_[std::size_t(count[std::size_t(a.u)]++)] = i;
-      incidence_[std::size_t(count[std::size_t(a.w)]++)] = i;
-    }
+    largest_radius_ = largest.load();
   }
 
   // The two passes of the class documentation.  Peeling follows a chain from
@@ -314,8 +313,7 @@ private:
       int top1_child;        // the child of top1
       int link;              // the same for the indices of the curves (-1 at a root)
       int parent;            // the same for the nodes at their other ends
-      int left;              // curves not yet peeled, -1 once peeled; then, fronts
-                             // still to arrive
+      int left;              // curves not yet peeled, -1 once peeled, 0 once ignited
     };
     auto bits = [](double x) {
       std::uint64_t b;
@@ -336,23 +334,35 @@ private:
         x.left = vertices_[v].degree;   // a loop (u == w) counts twice and is never peeled
         x.link = x.parent = 0;
         x.length = 0;
-        for(const int* k = arcs_begin(int(v)); k != arcs_end(int(v)); ++k) {
-          const Arc& a = arcs_[std::size_t(*k)];
-          x.link ^= *k;
-          x.parent ^= a.u ^ a.w ^ int(v);
-          x.length ^= bits(a.length);
-        }
       }
     });
+    // the exclusive or of the curves at each node, from the curves (for a
+    // loop, both ends cancel)
+    for(std::size_t k = 0; k < arcs_.size(); ++k) {
+      const Arc& a = arcs_[k];
+      const std::uint64_t l = bits(a.length);
+      State& x = st[std::size_t(a.u)];
+      x.link ^= int(k);
+      x.parent ^= a.w;
+      x.length ^= l;
+      State& y = st[std::size_t(a.w)];
+      y.link ^= int(k);
+      y.parent ^= a.u;
+      y.length ^= l;
+    }
     std::vector<int> peel;
     peel.reserve(n);
     // pass 1: peeling, from each end up as long as the next node is ready
     // (for the ends further on, the record of the node at the other end of
     // their curve is fetched ahead)
     using Progressive_medial_axes::internal::prefetch;
+    // (an end not yet peeled is a node with 0 or 1 curves left: a node of
+    // higher degree is peeled as soon as it has one left, so the scan reads
+    // only the states)
+    auto end_to_peel = [&](std::size_t v) { return unsigned(st[v].left) <= 1; };
     for(std::size_t v0 = 0; v0 < n; ++v0) {
-      if(v0 + 8 < n && vertices_[v0 + 8].degree == 1) prefetch(&st[std::size_t(st[v0 + 8].parent)]);
-      if(vertices_[v0].degree != 1 || st[v0].left < 0) continue;
+      if(v0 + 8 < n && end_to_peel(v0 + 8)) prefetch(&st[std::size_t(st[v0 + 8].parent)]);
+      if(!end_to_peel(v0)) continue;
       int v = int(v0);
       while(v >= 0) {
         peel.push_back(v);
@@ -378,34 +388,35 @@ private:
         v = next;
       }
     }
-    // pass 2: from the parents down; below the 2-core the parent's side
-    // never sends a front (the arrival from there is infinite)
-    for(std::size_t i = peel.size(); i-- > 0;) {
-      if(i >= 8) prefetch(&st[std::size_t(peel[i - 8])]);
-      State& x = st[std::size_t(peel[i])];
-      if(x.parent < 0) continue;   // a root
-      const State& y = st[std::size_t(x.parent)];
-      double t;
-      if(y.left != -1) t = inf;
-      else {
-        t = (std::max)(y.down, y.top1_child == peel[i] ? y.top2 : y.top1);
-        if(t == none) t = 0;   // the parent is an end
-      }
-      x.down = t + parent_length(x);
-    }
-    // ignition: the latest arrival but one, and the curve of the latest
+    // pass 2, from the parents down, and ignition in the same pass: a node's
+    // arrival from its parent's side needs only the parent's, and then all
+    // its arrivals are known.  Below the 2-core the parent's side never
+    // sends a front (the arrival from there is infinite).  A node ignites at
+    // the latest arrival but one, into the curve of the latest.
     auto to = Progressive_medial_axes::internal::parallel_filled(n, -1);   // the node the front of a node reaches, if it burns (compact, for the last pass)
     last_time_ = 0;
-    for(std::size_t i = 0; i < peel.size(); ++i) {
-      if(i + 8 < peel.size()) {
-        prefetch(&st[std::size_t(peel[i + 8])]);
-        prefetch(&vertices_[std::size_t(peel[i + 8])]);
+    for(std::size_t i = peel.size(); i-- > 0;) {
+      if(i >= 8) {
+        prefetch(&st[std::size_t(peel[i - 8])]);
+        prefetch(&vertices_[std::size_t(peel[i - 8])]);
       }
-      if(i + 4 < peel.size() && st[std::size_t(peel[i + 4])].link >= 0)   // the curve its fire mostly runs into
-        prefetch(&arcs_[std::size_t(st[std::size_t(peel[i + 4])].link)]);
+      if(i >= 4 && st[std::size_t(peel[i - 4])].link >= 0)   // the curve its fire mostly runs into
+        prefetch(&arcs_[std::size_t(st[std::size_t(peel[i - 4])].link)]);
       const int v = peel[i];
-      Node& nv = vertices_[std::size_t(v)];
       State& x = st[std::size_t(v)];
+      if(x.parent >= 0) {   // else a root
+        // (the parent is peeled (left -1) or, before this node, ignited
+        // (left 0); a node of the 2-core has at least two curves left)
+        const State& y = st[std::size_t(x.parent)];
+        double t;
+        if(y.left > 0) t = inf;
+        else {
+          t = (std::max)(y.down, y.top1_child == v ? y.top2 : y.top1);
+          if(t == none) t = 0;   // the parent is an end
+        }
+        x.down = t + parent_length(x);
+      }
+      Node& nv = vertices_[std::size_t(v)];
       double t;
       if(x.parent >= 0 && x.down >= x.top1) {
         nv.out = x.link;
@@ -434,23 +445,24 @@ private:
       }
     }
     // the order of fire: a node after every node whose front reaches it,
-    // again along the tree as far as possible
-    for(std::size_t i = 0; i < peel.size(); ++i) {
-      if(i + 16 < peel.size()) prefetch(&to[std::size_t(peel[i + 16])]);
-      if(i + 8 < peel.size() && to[std::size_t(peel[i + 8])] >= 0) prefetch(&st[std::size_t(to[std::size_t(peel[i + 8])])]);
-      const int w = to[std::size_t(peel[i])];
-      if(w >= 0) ++st[std::size_t(w)].left;
+    // again along the tree as far as possible (the fronts still to arrive
+    // at each node are counted in a small array of their own)
+    st.reset();
+    auto waiting = Progressive_medial_axes::internal::parallel_filled(n, 0);
+    for(std::size_t v = 0; v < n; ++v) {
+      const int w = to[v];
+      if(w >= 0) ++waiting[std::size_t(w)];
     }
     order_.clear();
     order_.reserve(peel.size());
     for(int v0 : peel) {
-      if(st[std::size_t(v0)].left != 0) continue;
+      if(waiting[std::size_t(v0)] != 0) continue;
       int v = v0;
       while(v >= 0) {
-        st[std::size_t(v)].left = -1;
+        waiting[std::size_t(v)] = -1;
         order_.push_back(v);
         const int w = to[std::size_t(v)];
-        v = (w >= 0 && --st[std::size_t(w)].left == 0) ? w : -1;
+        v = (w >= 0 && --waiting[std::size_t(w)] == 0) ? w : -1;
       }
     }
     CGAL_assertion(order_.size() == peel.size());
@@ -459,7 +471,6 @@ private:
   Medial_axis ma_;
   Node_vector vertices_;
   Arc_vector arcs_;
-  boost::container::vector<int> incidence_;
   std::vector<int> order_;
   boost::container::vector<int> vertex_map_;   // by id number
   double last_time_ = 0;
@@ -582,31 +593,40 @@ Pruned_medial_axis_2<K> prune_medial_axis_2(const Medial_axis_significance_2<K>&
   auto margin_at_vertex = [&](int v) { return margin(nodes[v].time, nodes[v].radius); };
   auto et_of = [&](double time, double radius) { return time == inf ? inf : (std::max)(0.0, time - radius); };
   typedef Progressive_medial_axes::internal::Curve Geometry;
-  // margin at parameter p of curve c of arc a, p from the burning end (u if
+  typedef Progressive_medial_axes::internal::Curve_parameterization Parameterization;
+  typedef std::pair<double, double> Point;
+  // margin at parameter p of curve c of arc a, whose first generator is
+  // the segment g0 g1 (g0 == g1 for a point), p from the burning end (u if
   // from_u), 0..1
-  auto margin_at_parameter = [&](const Arc& a, const Geometry& c, double p, double start_time, bool from_u) {
+  auto margin_at_parameter = [&](const Arc& a, const Parameterization& c, const Point& g0, const Point& g1, double p,
+                                 double start_time, bool from_u) {
     const double q = from_u ? p : 1 - p;   // parameter from u
-    const double s = c.length_at_parameter(q);
+    const double s = c.length_at(q);
     const double x = from_u ? s : a.length - s;  // arc length from the burning end
-    const double r = sig.halfedge(a).distance_to_point(c.point_at_parameter(q));
+    const double r = Progressive_medial_axes::internal::distance_to_segment(c.point_at(q), g0, g1);
     return margin(start_time + x, r);
   };
   // the arc length from u of the first point where the condition holds,
   // walking from the burning end (u if from_u) towards the other end, where
   // it holds; the condition fails at the burning end
   auto cut = [&](const Arc& a, double start_time, bool from_u, double p_end) {
-    const Geometry w = sig.halfedge(a).geometry();
+    const auto h = sig.halfedge(a);
+    const Geometry w = h.geometry();
+    const Parameterization c(w);
+    // (the distance to the generator on the left of h: Halfedge_handle::distance_to_point())
+    const Point g0 = Sig::Medial_axis::to_xy(h.face().source()), g1 = Sig::Medial_axis::to_xy(h.face().target());
     // parameters from the burning end: the condition fails at lo, holds at
     // hi; the Illinois variant of the false position method (the margin is
     // smooth and concave), with bisection steps if it stalls
     double lo = 0, hi = p_end;
-    double flo = margin_at_parameter(a, w, lo, start_time, from_u), fhi = margin_at_parameter(a, w, hi, start_time, from_u);
+    double flo = margin_at_parameter(a, c, g0, g1, lo, start_time, from_u);
+    double fhi = margin_at_parameter(a, c, g0, g1, hi, start_time, from_u);
     if(!(flo < 0)) hi = lo;
     int side = 0;
     for(int i = 0; i < 100 && hi - lo > 1e-13 * p_end; ++i) {
       double mid = (flo < 0 && fhi >= 0 && fhi - flo > 0) ? lo + (hi - lo) * (-flo) / (fhi - flo) : 0.5 * (lo + hi);
       if(!(mid > lo && mid < hi) || i % 8 == 7) mid = 0.5 * (lo + hi);
-      const double f = margin_at_parameter(a, w, mid, start_time, from_u);
+      const double f = margin_at_parameter(a, c, g0, g1, mid, start_time, from_u);
       if(f >= 0) {
         hi = mid;
         fhi = f;
@@ -621,7 +641,7 @@ Pruned_medial_axis_2<K> prune_medial_axis_2(const Medial_axis_significance_2<K>&
       if(f == 0) break;
     }
     const double q = from_u ? hi : 1 - hi;
-    return w.length_at_parameter(q);
+    return c.length_at(q);
   };
 
   std::vector<char> kept(nodes.size(), 0);
@@ -631,7 +651,6 @@ Pruned_medial_axis_2<K> prune_medial_axis_2(const Medial_axis_significance_2<K>&
   // is, and the node at its other end
   for(int v = 0; v < int(nodes.size()); ++v)
     if(!nodes[v].ignited) kept[v] = 1;
-  std::vector<int> order(sig.order_of_fire().rbegin(), sig.order_of_fire().rend());
   std::vector<char> arc_done(arcs.size(), 0);
   std::size_t whole = 0;   // kept curves that are not cut
   auto add_curve = [&](const Arc& a, double b, double e) {
@@ -652,7 +671,9 @@ Pruned_medial_axis_2<K> prune_medial_axis_2(const Medial_axis_significance_2<K>&
       out.links_.push_back({u, w, c.length()});
     }
   };
-  for(int v : order) {
+  const std::vector<int>& order = sig.order_of_fire();
+  for(auto it = order.rbegin(); it != order.rend(); ++it) {
+    const int v = *it;
     const Node& n = nodes[v];
     if(n.meets) {
       // fronts meet inside this curve: the meeting point burns last

@@ -233,6 +233,35 @@ struct Curve {
   }
 };
 
+/// The points of one curve by parameter, for many evaluations along it (the
+/// cuts of pruning): what does not depend on the parameter is computed once,
+/// and the values are exactly those of Curve::length_at_parameter() and
+/// Curve::point_at_parameter().
+struct Curve_parameterization {
+  typedef Curve::Point Point;
+  const Curve& c;
+  double xa = 0, xb = 0, arc_a = 0, length = 0;
+  explicit Curve_parameterization(const Curve& curve) : c(curve)
+  {
+    if(c.parabolic) {
+      xa = c.abscissa(c.a);
+      xb = c.abscissa(c.b);
+      arc_a = c.arc(xa);
+    } else
+      length = c.length();
+  }
+  double length_at(double u) const
+  {
+    if(!c.parabolic) return length * u;
+    return std::fabs(c.arc(xa + (xb - xa) * u) - arc_a) * c.scale;
+  }
+  Point point_at(double u) const
+  {
+    if(!c.parabolic) return Point(c.a.first + (c.b.first - c.a.first) * u, c.a.second + (c.b.second - c.a.second) * u);
+    return c.at(xa + (xb - xa) * u);
+  }
+};
+
 } // namespace internal
 } // namespace Progressive_medial_axes
 } // namespace CGAL
