@@ -998,10 +998,15 @@ int main(int argc, char** argv)
   // ones: 10% to 15% of the analysis on real outlines, for a higher peak
   // (RESULTS.md, "Significance, pruning and centerline, fourth session").
   // Not for the axis alone: its peak on a 100,000-hole plate grows by 25%.
+  // glibc maps blocks above 32 MB afresh all the same, unless the main
+  // heap maps none: the arrays of the analysis of a plate of 100,000 holes
+  // are larger, and their pages are then reused too, for the same peak
+  // (RESULTS.md, "The analysis's share (issue 14), seventeenth session").
   // For the same reason, a large one-shot then keeps what it freed rather
   // than give it back to the system (release_memory_of_large_one_shots()).
   if(o.analysed()) {
     mallopt(M_MMAP_THRESHOLD, 32 << 20);
+    mallopt(M_MMAP_MAX, 0);
     CGAL::Progressive_medial_axes::internal::release_memory_of_large_one_shots() = false;
   }
 #endif

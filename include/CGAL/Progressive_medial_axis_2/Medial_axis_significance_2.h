@@ -178,14 +178,13 @@ public:
   // every field once, the nodes in parallel)
   struct Node {
     double radius;
-    double time;         // infinite until it catches fire
+    double time;         // infinite until it catches fire (every node that does
+                         // catches fire at a finite time)
+    double out_length;   // the length of its curve `out`
     int vertex;          // its id number in the axis
-    int degree;          // the number of its curves (a loop counts twice)
     int out;             // the curve the fire goes on into (-1 if none)
     int far;             // the node at its other end (-1 if none)
-    double out_length;   // its length
     bool meets;          // whether a front from its other end meets this one inside it
-    bool ignited;
   };
   struct Arc {
     int halfedge;  // the id number of the half-edge, oriented from node u to node w
@@ -240,21 +239,20 @@ private:
     vertex_map_ = parallel_filled(ma_.vertex_id_bound(), -1);
     // Nodes in the order in which the curves reach them, numbered in one
     // pass that reads only the ends and writes, for each node, its first
-    // end (2 k + 0 or 1 for the source or target of curve k) and its
-    // degree; the records are written after it, in parallel.  Without
-    // branches: whether a curve reaches a node first follows no pattern a
-    // branch predictor could learn.
-    auto first_end = parallel_filled(2 * m + 1, 0), count = parallel_filled(2 * m + 2, 0);
+    // end (2 k + 0 or 1 for the source or target of curve k); the records
+    // are written after it, in parallel.  Without branches: whether a curve
+    // reaches a node first follows no pattern a branch predictor could
+    // learn.  (There are up to 2 m + 1 nodes, usually about m: the pass
+    // writes the entries of first_end up to the number of nodes only.)
+    boost::container::vector<int> first_end(2 * m + 1, boost::container::default_init);
     int n_nodes = 0;
     for(std::size_t k = 0; k < m; ++k)
       for(std::size_t s = 0; s < 2; ++s) {
         const std::size_t v = std::size_t(ends[k][s]);
         const int i = vertex_map_[v];
-        const int j = i < 0 ? n_nodes : i;
-        vertex_map_[v] = j;
+        vertex_map_[v] = i < 0 ? n_nodes : i;
         first_end[std::size_t(n_nodes)] = int(2 * k + s);   // kept if the node is new
         n_nodes += int(i < 0);
-        ++count[std::size_t(j) + 1];
       }
     arcs_.resize(m, boost::container::default_init);
     parallel_blocks(m, [&](std::size_t b, std::size_t e) {
@@ -278,10 +276,9 @@ private:
         x.radius = radii[o / 2][o % 2];
         x.time = infinity();
         x.vertex = ends[o / 2][o % 2];
-        x.degree = count[i + 1];
         x.out = x.far = -1;
         x.out_length = 0;
-        x.meets = x.ignited = false;
+        x.meets = false;
         r = (std::max)(r, x.radius);
       }
       for(double l = largest.load(); r > l && !largest.compare_exchange_weak(l, r);) {}
@@ -331,21 +328,23 @@ private:
         State& x = st[v];
         x.top1 = x.top2 = x.down = none;
         x.top1_child = -1;
-        x.left = vertices_[v].degree;   // a loop (u == w) counts twice and is never peeled
+        x.left = 0;
         x.link = x.parent = 0;
         x.length = 0;
       }
     });
-    // the exclusive or of the curves at each node, from the curves (for a
-    // loop, both ends cancel)
+    // the curves at each node and their exclusive or, from the curves (a
+    // loop (u == w) counts twice, is never peeled, and its two ends cancel)
     for(std::size_t k = 0; k < arcs_.size(); ++k) {
       const Arc& a = arcs_[k];
       const std::uint64_t l = bits(a.length);
       State& x = st[std::size_t(a.u)];
+      ++x.left;
       x.link ^= int(k);
       x.parent ^= a.w;
       x.length ^= l;
       State& y = st[std::size_t(a.w)];
+      ++y.left;
       y.link ^= int(k);
       y.parent ^= a.u;
       y.length ^= l;
@@ -433,7 +432,6 @@ private:
       }
       x.left = 0;
       nv.time = t == none ? 0.0 : t;
-      nv.ignited = true;
       last_time_ = (std::max)(last_time_, nv.time);
       Arc& a = arcs_[std::size_t(nv.out)];
       a.start[a.u == v ? 0 : 1] = nv.time;
@@ -650,7 +648,7 @@ Pruned_medial_axis_2<K> prune_medial_axis_2(const Medial_axis_significance_2<K>&
   // of a time): a node is kept if the whole curve it sends its front into
   // is, and the node at its other end
   for(int v = 0; v < int(nodes.size()); ++v)
-    if(!nodes[v].ignited) kept[v] = 1;
+    if(nodes[v].time == inf) kept[v] = 1;
   std::vector<char> arc_done(arcs.size(), 0);
   std::size_t whole = 0;   // kept curves that are not cut
   auto add_curve = [&](const Arc& a, double b, double e) {
