@@ -677,6 +677,12 @@ public:
           if(f0 >= 0) Progressive_medial_axes::internal::prefetch(&d->hds.face(f0));
           if(f1 >= 0) Progressive_medial_axes::internal::prefetch(&d->hds.face(f1));
         }
+        if(k + 8 < e) {   // and the points of their generators, once their cells are read
+          const int g = curves[k + 8];
+          const int f0 = d->hds.face_of(g), f1 = d->hds.face_of(g ^ 1);
+          if(f0 >= 0) Progressive_medial_axes::internal::prefetch(&d->points[std::size_t(d->hds.face(f0).p0)]);
+          if(f1 >= 0) Progressive_medial_axes::internal::prefetch(&d->points[std::size_t(d->hds.face(f1).p0)]);
+        }
         ends[k] = {{representative_of(d->hds.source(h)), representative_of(d->hds.target(h))}};
         lengths[k] = curve(d, h).length();
         if(radii)
