@@ -76,7 +76,9 @@ over the axis as a graph, as the eccentricities of a tree are.
 3. A vertex catches fire at the latest of its arrivals but the latest one
    (0 at an end) and sends its front into the curve of the latest one (on a
    tie, the parent's; between children, the first child peeled).  The times
-   do not depend on how ties are broken.
+   do not depend on how ties are broken.  Steps 2 and 3 are one pass: a
+   vertex's `down(v)` needs only its parent's, and then all its arrivals
+   are known.
 Invariants: the ignition time of a vertex is no earlier than any front it
 gets; every curve at a vertex that burns carries a front from one end at
 least (the curves of the 2-core carry none); a curve with fronts
