@@ -138,14 +138,6 @@ struct Curve {
     return at(xa + (xb - xa) * u);
   }
 
-  /// The arc length from a to the point at parameter u.
-  double length_at_parameter(double u) const
-  {
-    if(!parabolic) return length() * u;
-    const double xa = abscissa(a), xb = abscissa(b);
-    return std::fabs(arc(xa + (xb - xa) * u) - arc(xa)) * scale;
-  }
-
   /// The parameter (see point_at_parameter()) of the point at arc length s
   /// from a, clamped to [0, 1].
   double parameter_at_length(double s) const
@@ -233,10 +225,9 @@ struct Curve {
   }
 };
 
-/// The points of one curve by parameter, for many evaluations along it (the
-/// cuts of pruning): what does not depend on the parameter is computed once,
-/// and the values are exactly those of Curve::length_at_parameter() and
-/// Curve::point_at_parameter().
+/// The points of one curve by parameter (see Curve::point_at_parameter()),
+/// and the arc length from `a` to them, for many evaluations along it (the
+/// cuts of pruning): what does not depend on the parameter is computed once.
 struct Curve_parameterization {
   typedef Curve::Point Point;
   const Curve& c;
@@ -257,8 +248,8 @@ struct Curve_parameterization {
   }
   Point point_at(double u) const
   {
-    if(!c.parabolic) return Point(c.a.first + (c.b.first - c.a.first) * u, c.a.second + (c.b.second - c.a.second) * u);
-    return c.at(xa + (xb - xa) * u);
+    if(!c.parabolic) return c.point_at_parameter(u);
+    return c.at(xa + (xb - xa) * u);   // (Curve::point_at_parameter() with the abscissas kept)
   }
 };
 
