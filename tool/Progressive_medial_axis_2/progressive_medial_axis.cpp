@@ -1004,9 +1004,14 @@ int main(int argc, char** argv)
   // (RESULTS.md, "The analysis's share (issue 14), seventeenth session").
   // For the same reason, a large one-shot then keeps what it freed rather
   // than give it back to the system (release_memory_of_large_one_shots()).
+  // And one heap for all the threads (M_ARENA_MAX): what the threads of the
+  // axis freed in their own heaps is then there for the analysis, which
+  // allocates on this thread (RESULTS.md, "The analysis's share, eighteenth
+  // session").
   if(o.analysed()) {
     mallopt(M_MMAP_THRESHOLD, 32 << 20);
     mallopt(M_MMAP_MAX, 0);
+    mallopt(M_ARENA_MAX, 1);
     CGAL::Progressive_medial_axes::internal::release_memory_of_large_one_shots() = false;
   }
 #endif

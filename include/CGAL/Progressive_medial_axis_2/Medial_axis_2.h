@@ -37,6 +37,7 @@
 #include <iterator>
 #include <limits>
 #include <memory>
+#include <new>
 #include <string>
 #include <type_traits>
 #include <utility>
@@ -133,6 +134,43 @@ boost::container::vector<T> parallel_filled(std::size_t n, const T& value)
   });
   return v;
 }
+
+// A read-only array of n records, each written once, in parallel, by
+// write(), and never constructed before: the analysis of a plate of 100,000
+// holes makes arrays of over a million records, and a container that
+// constructs its elements (std::vector, or boost::container::vector for a
+// class with a constructor of its own, such as a handle) would first write
+// them all on one thread.  Copies share the records (they are not written
+// once the array is handed out).  For trivially copyable, trivially
+// destructible records.
+template <class T>
+class Written_once_array
+{
+  static_assert(std::is_trivially_destructible<T>::value && std::is_trivially_copyable<T>::value,
+                "the array neither copies nor destroys its records one by one");
+
+public:
+  typedef T value_type;
+  typedef const T* const_iterator;
+  typedef const_iterator iterator;
+  Written_once_array() {}
+  explicit Written_once_array(std::size_t n)
+    : p_(n == 0 ? nullptr : static_cast<T*>(::operator new(n * sizeof(T))), [](T* q) { ::operator delete(q); }), n_(n)
+  {
+  }
+  void write(std::size_t i, const T& x) { new(p_.get() + i) T(x); }
+  const_iterator begin() const { return p_.get(); }
+  const_iterator end() const { return p_.get() + n_; }
+  std::size_t size() const { return n_; }
+  bool empty() const { return n_ == 0; }
+  const T& operator[](std::size_t i) const { return p_.get()[i]; }
+  const T& front() const { return p_.get()[0]; }
+  const T& back() const { return p_.get()[n_ - 1]; }
+
+private:
+  std::shared_ptr<T> p_;
+  std::size_t n_ = 0;
+};
 
 // A hint that the record at p is read soon: for the passes of the analysis
 // over a tree, whose reads jump around memory in an order known ahead.

@@ -17,6 +17,7 @@
 #include <CGAL/Progressive_medial_axis_2/Medial_axis_significance_2.h>
 
 #include <boost/container/vector.hpp>
+#include <boost/iterator/transform_iterator.hpp>
 
 #include <algorithm>
 #include <array>
@@ -84,9 +85,50 @@ public:
     double from = 0, to = 0;
     double length() const { return std::fabs(to - from); }
   };
+  /// \cond
+  typedef typename Pruned_medial_axis_2<K>::Curve Pruned_curve;
+  // The piece of a half of a kept curve of the pruned axis: 2 k for kept
+  // curve k in its direction, 2 k + 1 backwards.
+  struct Piece_of_half {
+    const Pruned_curve* curves = nullptr;
+    Piece operator()(int h) const
+    {
+      const Pruned_curve& c = curves[std::size_t(h >> 1)];
+      Piece p;
+      p.halfedge = c.halfedge;
+      p.from = c.begin;
+      p.to = c.end;
+      if(h & 1) std::swap(p.from, p.to);
+      return p;
+    }
+  };
+  /// \endcond
+  /// The pieces of a path: a random-access range of `Piece` values, made on
+  /// the fly from storage that the centerline and its copies share (valid as
+  /// long as one of them lives).  A path of a plate of 100,000 holes has a
+  /// few pieces, and there are 300,000 paths: they are halves of the pruned
+  /// axis's curves in a few arrays rather than a vector of pieces each.
+  class Piece_range
+  {
+  public:
+    typedef boost::transform_iterator<Piece_of_half, const int*, Piece, Piece> const_iterator;
+    typedef const_iterator iterator;
+    const_iterator begin() const { return const_iterator(b_, f_); }
+    const_iterator end() const { return const_iterator(e_, f_); }
+    std::size_t size() const { return std::size_t(e_ - b_); }
+    bool empty() const { return b_ == e_; }
+    Piece operator[](std::size_t i) const { return f_(b_[i]); }
+    Piece front() const { return f_(*b_); }
+    Piece back() const { return f_(e_[-1]); }
+
+  private:
+    friend class Medial_axis_centerline_2;
+    const int *b_ = nullptr, *e_ = nullptr;
+    Piece_of_half f_;
+  };
   /// One path of the centerline.
   struct Path {
-    std::vector<Piece> pieces;
+    Piece_range pieces;
     bool has_start_extension = false, has_end_extension = false;
     Point start_extension, end_extension;  ///< the points on the boundary that the extensions reach
     bool closed = false;                   ///< a cycle around a hole
@@ -183,6 +225,17 @@ public:
   /// \cond
   explicit Medial_axis_centerline_2(const Medial_axis& ma) : ma_(ma) {}
   std::vector<Path> paths_;
+  // The pieces of the paths: ranges of the arrays of halves (shared by the
+  // copies of the centerline) over the kept curves (shared with the pruned
+  // axis).
+  void set_pieces(Path& p, std::size_t array, std::size_t b, std::size_t e) const
+  {
+    p.pieces.b_ = (*halves_)[array].data() + b;
+    p.pieces.e_ = (*halves_)[array].data() + e;
+    p.pieces.f_.curves = curves_.begin();
+  }
+  Progressive_medial_axes::internal::Written_once_array<Pruned_curve> curves_;
+  std::shared_ptr<const std::vector<std::vector<int> > > halves_;
   static Point point_of(const Piece& x, double s)
   {
     if(s <= 0) return Medial_axis::to_xy(x.halfedge.source().point());
@@ -274,7 +327,8 @@ Medial_axis_centerline_2<K> medial_axis_centerline_2(const Pruned_medial_axis_2<
   typedef typename Centerline::Path Path;
   typedef typename Pruned_medial_axis_2<K>::Curve Curve;
   Centerline out(pruned.medial_axis());
-  const std::vector<Curve>& curves = pruned.curves();
+  const auto& curves = pruned.curves();
+  out.curves_ = curves;
   if(curves.empty()) return out;
 
   // the graph: the nodes of the significance's graph at the ends of the
@@ -283,7 +337,7 @@ Medial_axis_centerline_2<K> medial_axis_centerline_2(const Pruned_medial_axis_2<
   // so that the arrays below have the size of the pruned axis rather than
   // that of the whole axis.
   typedef typename Pruned_medial_axis_2<K>::Link Link;
-  std::vector<Link> renumbered;
+  typename Pruned_medial_axis_2<K>::Link_vector renumbered;
   int n_nodes = pruned.number_of_nodes_;
   if(8 * pruned.links_.size() < std::size_t(n_nodes)) {
     std::vector<int> ids;
@@ -299,7 +353,7 @@ Medial_axis_centerline_2<K> medial_axis_centerline_2(const Pruned_medial_axis_2<
     for(const Link& l : pruned.links_) renumbered.push_back(Link{id(l.a), id(l.b), l.length});
     n_nodes = int(ids.size());
   }
-  const std::vector<Link>& links = renumbered.empty() ? pruned.links_ : renumbered;
+  const auto& links = renumbered.empty() ? pruned.links_ : renumbered;
   // The curves at each node, in one array.  Set up in parts of the nodes, in
   // parallel: each part reads all the links and writes what its nodes own,
   // in the order of the links.
@@ -502,26 +556,21 @@ Medial_axis_centerline_2<K> medial_axis_centerline_2(const Pruned_medial_axis_2<
   // both of its starts; the later one skips it (or, when both were walked
   // at once, drops it).
   auto half = [&](int k) { return near[std::size_t(k)].half; };
-  auto piece_of = [&](int h) {   // the curve of a half, walked in its direction
-    const Curve& c = curves[std::size_t(h >> 1)];
-    Piece p;
-    p.halfedge = c.halfedge;
-    p.from = c.begin;
-    p.to = c.end;
-    if(h & 1) std::swap(p.from, p.to);
-    return p;
-  };
   if(degree(root) == 2) {   // a cycle without a junction
-    Path path;
-    path.closed = true;
+    std::vector<int> halves;
     int k = first[std::size_t(root)];
     while(!live(k)) ++k;
     while(true) {
-      path.pieces.push_back(piece_of(half(k)));
+      halves.push_back(half(k));
       if(near[std::size_t(k)].node == root) break;
       k = next[std::size_t(k)];
     }
-    out.paths_.push_back(std::move(path));
+    const std::size_t n = halves.size();
+    out.halves_ = std::make_shared<const std::vector<std::vector<int> > >(1, std::move(halves));
+    Path path;
+    path.closed = true;
+    out.set_pieces(path, 0, 0, n);
+    out.paths_.push_back(path);
   } else {
     std::vector<int> starts, start_node;
     auto add_starts = [&](int v) {
@@ -544,7 +593,8 @@ Medial_axis_centerline_2<K> medial_axis_centerline_2(const Pruned_medial_axis_2<
     // a start whose chain is walked (written and read by the parts at
     // once: a part that misses a mark walks the chain again and drops it)
     std::unique_ptr<std::atomic<char>[]> done(new std::atomic<char>[near.size()]());
-    // by part, the halves of its kept chains, one after the other
+    // by part, the halves of its kept chains, one after the other (the
+    // pieces of the paths)
     std::vector<std::vector<int> > seq(parts);
     struct Chain { std::size_t part, begin, end; int to; };
     std::vector<Chain> chains(starts.size(), Chain{0, 0, 0, -1});   // by start
@@ -607,19 +657,11 @@ Medial_axis_centerline_2<K> medial_axis_centerline_2(const Pruned_medial_axis_2<
     for(std::size_t i = 0; i < chains.size(); ++i)
       if(chains[i].to >= 0 && find(start_node[i]) == root_component) kept.push_back(i);
     out.paths_.resize(kept.size());
-    Progressive_medial_axes::internal::parallel_blocks(kept.size(), [&](std::size_t b, std::size_t e) {
-      for(std::size_t i = b; i < e; ++i) {
-        const Chain& c = chains[kept[i]];
-        const std::vector<int>& halves = seq[c.part];
-        std::vector<Piece>& pieces = out.paths_[i].pieces;
-        pieces.reserve(c.end - c.begin);
-        for(std::size_t j = c.begin; j < c.end; ++j) {
-          // the curves are read in no order: ask for them ahead
-          if(j + 16 < halves.size()) Progressive_medial_axes::internal::prefetch(&curves[std::size_t(halves[j + 16] >> 1)]);
-          pieces.push_back(piece_of(halves[j]));
-        }
-      }
-    });
+    out.halves_ = std::make_shared<const std::vector<std::vector<int> > >(std::move(seq));
+    for(std::size_t i = 0; i < kept.size(); ++i) {
+      const Chain& c = chains[kept[i]];
+      out.set_pieces(out.paths_[i], c.part, c.begin, c.end);
+    }
   }
 
   if(extend) {

@@ -515,12 +515,12 @@ public:
   };
 
   const Medial_axis& medial_axis() const { return ma_; }
-  /// The kept parts of curves.
-  const std::vector<Curve>& curves() const { return curves_; }
+  /// The kept parts of curves (a random-access range).
+  const Progressive_medial_axes::internal::Written_once_array<Curve>& curves() const { return curves_; }
   /// Whether a vertex of the axis is kept.
   bool is_kept(const Vertex_handle& v) const { return v.id_number() < kept_.size() && kept_[v.id_number()]; }
-  /// The kept vertices.
-  const std::vector<Vertex_handle>& vertices() const { return vertices_; }
+  /// The kept vertices (a random-access range).
+  const Progressive_medial_axes::internal::Written_once_array<Vertex_handle>& vertices() const { return vertices_; }
   /// The points that stand alone: for each component of the axis without
   /// cycle whose last burning point falls below the thresholds, that point
   /// (the pruned axis of that component).
@@ -530,8 +530,8 @@ public:
 
   /// \cond
   Pruned_medial_axis_2(const Medial_axis& ma) : ma_(ma) {}
-  std::vector<Curve> curves_;
-  std::vector<Vertex_handle> vertices_;
+  Progressive_medial_axes::internal::Written_once_array<Curve> curves_;
+  Progressive_medial_axes::internal::Written_once_array<Vertex_handle> vertices_;
   std::vector<char> kept_;   // by id number
   std::vector<std::pair<double, double> > points_;
   std::size_t pruned_ = 0;
@@ -539,7 +539,8 @@ public:
   // of the significance's graph, and a node of its own at each cut end) and
   // its length; and the number of nodes
   struct Link { int a, b; double length; };
-  std::vector<Link> links_;
+  typedef boost::container::vector<Link> Link_vector;
+  Link_vector links_;
   int number_of_nodes_ = 0;
   /// \endcond
 
@@ -574,11 +575,12 @@ Pruned_medial_axis_2<K> prune_medial_axis_2(const Medial_axis_significance_2<K>&
   const double inf = Sig::infinity();
   const auto& nodes = sig.nodes();
   const auto& arcs = sig.arcs();
+  typedef typename Pruned_medial_axis_2<K>::Link Link;
   Pruned_medial_axis_2<K> out(sig.medial_axis());
-  // at most one kept part per curve (pages that are not written cost nothing)
-  out.curves_.reserve(arcs.size());
-  out.links_.reserve(arcs.size());
   out.number_of_nodes_ = int(nodes.size());
+  // the curves that the fire reaches, before those it never reaches
+  std::vector<Curve> fired;
+  std::vector<Link> fired_links;
 
   // the condition at a point of arc a, at arc length x from its node u, in
   // the form f >= 0 (f is concave along the curve)
@@ -664,11 +666,11 @@ Pruned_medial_axis_2<K> prune_medial_axis_2(const Medial_axis_significance_2<K>&
     c.et_end = c.end < a.length ? et_of(Sig::time_along(a, c.end), c.halfedge.radius_at(c.end))
                                 : et_of(nodes[a.w].time, nodes[a.w].radius);
     if(c.end > c.begin || (c.begin == 0 && c.end == a.length)) {
-      out.curves_.push_back(c);
+      fired.push_back(c);
       whole += std::size_t(!c.cut_at_begin() && !c.cut_at_end());
       const int u = c.cut_at_begin() ? out.number_of_nodes_++ : a.u;
       const int w = c.cut_at_end() ? out.number_of_nodes_++ : a.w;
-      out.links_.push_back({u, w, c.length()});
+      fired_links.push_back({u, w, c.length()});
     }
   };
   const std::vector<int>& order = sig.order_of_fire();
@@ -716,20 +718,25 @@ Pruned_medial_axis_2<K> prune_medial_axis_2(const Medial_axis_significance_2<K>&
   // written without reading the nodes.  They are most of the axis of a
   // shape with many holes: counted, then written in parallel parts, in the
   // order of the arcs.
-  const std::size_t before = out.curves_.size();
+  const std::size_t before = fired.size();
   Progressive_medial_axes::internal::parallel_compact(
     arcs.size(), before, [&](std::size_t i) { return arcs[i].start[0] == inf && arcs[i].start[1] == inf; },
     [&](std::size_t total) {
-      out.curves_.resize(total);
-      out.links_.resize(total);
+      out.curves_ = Progressive_medial_axes::internal::Written_once_array<Curve>(total);
+      out.links_.resize(total, boost::container::default_init);
+      for(std::size_t k = 0; k < before; ++k) {
+        out.curves_.write(k, fired[k]);
+        out.links_[k] = fired_links[k];
+      }
     },
     [&](std::size_t i, std::size_t k) {
       const Arc& a = arcs[i];
-      Curve& c = out.curves_[k];
+      Curve c;
       c.halfedge = sig.halfedge(a);
       c.begin = 0;
       c.end = c.full_length = a.length;
       c.et_begin = c.et_end = inf;
+      out.curves_.write(k, c);
       out.links_[k] = {a.u, a.w, a.length};
     });
   whole += out.curves_.size() - before;
@@ -737,9 +744,9 @@ Pruned_medial_axis_2<K> prune_medial_axis_2(const Medial_axis_significance_2<K>&
   out.kept_.assign(sig.medial_axis().vertex_id_bound(), 0);
   Progressive_medial_axes::internal::parallel_compact(
     nodes.size(), 0, [&](std::size_t v) { return kept[v] != 0; },
-    [&](std::size_t total) { out.vertices_.resize(total); },
+    [&](std::size_t total) { out.vertices_ = Progressive_medial_axes::internal::Written_once_array<typename Sig::Vertex_handle>(total); },
     [&](std::size_t v, std::size_t k) {
-      out.vertices_[k] = sig.vertex(int(v));
+      out.vertices_.write(k, sig.vertex(int(v)));
       out.kept_[std::size_t(nodes[v].vertex)] = 1;   // (distinct nodes have distinct vertices)
     });
   out.pruned_ = arcs.size() - whole;
