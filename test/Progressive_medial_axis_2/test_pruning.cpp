@@ -26,6 +26,7 @@
 #include <iostream>
 #include <limits>
 #include <map>
+#include <memory>
 #include <queue>
 #include <random>
 #include <string>
@@ -199,6 +200,16 @@ void test_braided()
         below = below || q.second < 0.9;
       }
   CHECK(above && below, "braided river: the centerline misses a channel");
+  // the paths' pieces are shared by the copies of a centerline, and outlive
+  // the pruned axis and the original (the sanitizer build checks the reads)
+  std::unique_ptr<CGAL::Medial_axis_centerline_2<K> > original(
+    new CGAL::Medial_axis_centerline_2<K>(CGAL::medial_axis_centerline_2(CGAL::prune_medial_axis_2(sig, R), true)));
+  const CGAL::Medial_axis_centerline_2<K> copy = *original;
+  const auto lines = original->polylines(1e-3);
+  const double length = original->length();
+  original.reset();
+  CHECK(copy.polylines(1e-3) == lines && copy.length() == length && copy.paths()[0].pieces.size() > 0,
+        "braided river: a copy of the centerline differs once the original is gone");
 }
 
 // The extended distance function as the definition states it: an event

@@ -354,110 +354,101 @@ Medial_axis_centerline_2<K> medial_axis_centerline_2(const Pruned_medial_axis_2<
     n_nodes = int(ids.size());
   }
   const auto& links = renumbered.empty() ? pruned.links_ : renumbered;
-  // The curves at each node, in one array.  Set up in parts of the nodes, in
-  // parallel: each part reads all the links and writes what its nodes own,
-  // in the order of the links.
+  using Progressive_medial_axes::internal::parallel_parts;
+  using Progressive_medial_axes::internal::prefetch;
+  // The graph by node: its degree, and the exclusive or of its outgoing
+  // halves and of the nodes at their other ends.  The half 2 l walks link
+  // l from its node a to its node b, 2 l + 1 from b to a; a loop gives its
+  // node both halves and the node itself twice.  At a node of degree 2 a
+  // walk then goes on without a list of the node's links: its next half is
+  // the node's exclusive or of halves with the one it came in by (as an
+  // outgoing half), and its next node the node's exclusive or of nodes with
+  // the one it came from.  One record is read by step.  Set up in parts of
+  // the nodes, in parallel: each part reads all the links.
+  struct Node_state { int degree, halves, nodes; };
   const std::size_t parts = Progressive_medial_axes::internal::number_of_parts(links.size());
-  std::vector<int> first(std::size_t(n_nodes) + 1, 0);
-  Progressive_medial_axes::internal::parallel_parts(std::size_t(n_nodes), parts, [&](std::size_t, std::size_t b, std::size_t e) {
-    for(const Link& l : links) {
-      if(std::size_t(l.a) - b < e - b) ++first[std::size_t(l.a) + 1];
-      if(std::size_t(l.b) - b < e - b) ++first[std::size_t(l.b) + 1];
+  boost::container::vector<Node_state> node(std::size_t(n_nodes), boost::container::default_init);
+  parallel_parts(std::size_t(n_nodes), parts, [&](std::size_t, std::size_t b, std::size_t e) {
+    for(std::size_t v = b; v < e; ++v) node[v] = Node_state{0, 0, 0};
+    for(int i = 0; i < int(links.size()); ++i) {
+      const Link& l = links[std::size_t(i)];
+      if(std::size_t(l.a) - b < e - b) {
+        Node_state& x = node[std::size_t(l.a)];
+        ++x.degree;
+        x.halves ^= 2 * i;
+        x.nodes ^= l.b;
+      }
+      if(std::size_t(l.b) - b < e - b) {
+        Node_state& x = node[std::size_t(l.b)];
+        ++x.degree;
+        x.halves ^= 2 * i + 1;
+        x.nodes ^= l.a;
+      }
     }
   });
-  for(std::size_t v = 0; v < std::size_t(n_nodes); ++v) first[v + 1] += first[v];
-  // with the node at the other end and the link (what the searches and the
-  // walks read); half is 2 * link, plus 1 at the link's node b (a path
-  // leaving the node there walks the curve backwards)
-  struct Near { int node, half; };
-  // (not initialised: the parts below write every entry, each its own
-  // pages first, so that the pages are faulted in by both threads)
-  boost::container::vector<Near> near(2 * links.size(), boost::container::default_init);
-  // the incidences of each link at its nodes a and b
-  boost::container::vector<std::array<int, 2> > link_at(links.size(), boost::container::default_init);
+  auto degree = [&](int v) { return node[std::size_t(v)].degree; };
+  // the node that half h leads to from its node v
+  auto end_of = [&](int h, int v) {
+    const Link& l = links[std::size_t(h >> 1)];
+    return l.a ^ l.b ^ v;
+  };
+  // The junctions and ends (the nodes of degree neither 0 nor 2), and their
+  // outgoing halves in the order of the links (and of the halves).  Set up
+  // like the states.
+  std::vector<int> key_of(std::size_t(n_nodes), -1), keys;
+  for(int v = 0; v < n_nodes; ++v)
+    if(degree(v) != 2 && degree(v) != 0) {
+      key_of[std::size_t(v)] = int(keys.size());
+      keys.push_back(v);
+    }
+  std::vector<int> key_first(keys.size() + 1, 0);
+  for(std::size_t i = 0; i < keys.size(); ++i) key_first[i + 1] = key_first[i] + degree(keys[i]);
+  std::vector<int> key_half(std::size_t(key_first.back()));
   {
-    std::vector<int> fill(first.begin(), first.end() - 1);
-    Progressive_medial_axes::internal::parallel_parts(std::size_t(n_nodes), parts, [&](std::size_t, std::size_t b, std::size_t e) {
+    std::vector<int> fill(key_first.begin(), key_first.end() - 1);
+    parallel_parts(keys.size(), parts, [&](std::size_t, std::size_t b, std::size_t e) {
       for(int i = 0; i < int(links.size()); ++i) {
         const Link& l = links[std::size_t(i)];
-        if(std::size_t(l.a) - b < e - b) {
-          const int k = fill[std::size_t(l.a)]++;
-          near[std::size_t(k)] = Near{l.b, 2 * i};
-          link_at[std::size_t(i)][0] = k;
-        }
-        if(std::size_t(l.b) - b < e - b) {
-          const int k = fill[std::size_t(l.b)]++;
-          near[std::size_t(k)] = Near{l.a, 2 * i + 1};
-          link_at[std::size_t(i)][1] = k;
-        }
+        // (a node that is not a key is -1: out of every part)
+        const std::size_t ka = std::size_t(key_of[std::size_t(l.a)]), kb = std::size_t(key_of[std::size_t(l.b)]);
+        if(ka - b < e - b) key_half[std::size_t(fill[ka]++)] = 2 * i;
+        if(kb - b < e - b) key_half[std::size_t(fill[kb]++)] = 2 * i + 1;
       }
     });
   }
-  // the incidence of the same link at its other node
-  auto twin = [&](int k) {
-    const int h = near[std::size_t(k)].half;
-    return link_at[std::size_t(h >> 1)][std::size_t(1 - (h & 1))];
-  };
-  struct Curves_at {   // the links at a node
-    const Near *b, *e;
-    struct iterator {
-      const Near* p;
-      int operator*() const { return p->half >> 1; }
-      iterator& operator++() { ++p; return *this; }
-      bool operator!=(const iterator& o) const { return p != o.p; }
-    };
-    iterator begin() const { return iterator{b}; }
-    iterator end() const { return iterator{e}; }
-    std::size_t size() const { return std::size_t(e - b); }
-    int operator[](std::size_t i) const { return b[i].half >> 1; }
-  };
-  auto incident = [&](int v) {
-    return Curves_at{near.data() + first[std::size_t(v)], near.data() + first[std::size_t(v) + 1]};
-  };
-  auto at = [&](int k) { return near[std::size_t(k)].half >> 1; };
-  auto other = [&](int link, int node) { return links[link].a == node ? links[link].b : links[link].a; };
 
   // from an end (if there is none, the centerline is the cycles of the
   // first node on a curve; nodes of the significance's graph that are not
   // kept have no curve)
   int start = -1, some = -1;
   for(int v = 0; v < n_nodes && start < 0; ++v) {
-    if(incident(v).size() == 1) start = v;
-    if(some < 0 && incident(v).size() > 0) some = v;
+    if(degree(v) == 1) start = v;
+    if(some < 0 && degree(v) > 0) some = v;
   }
   int end_a = some, end_b = some;
   if(start >= 0) {
     // The two searches run on the graph of the junctions and ends only: each
     // chain of nodes of degree 2 between them (most nodes, for example the
     // curves around a hole) is one link there, of the chain's total length.
-    std::vector<int> key_of(std::size_t(n_nodes), -1), keys;
-    for(int v = 0; v < n_nodes; ++v)
-      if(incident(v).size() != 2 && incident(v).size() != 0) {
-        key_of[std::size_t(v)] = int(keys.size());
-        keys.push_back(v);
-      }
-    std::vector<int> key_first(keys.size() + 1, 0);
-    for(std::size_t i = 0; i < keys.size(); ++i)
-      key_first[i + 1] = key_first[i] + int(incident(keys[i]).size());
     struct Key_link { int node; double length; };
-    std::vector<Key_link> key_near(std::size_t(key_first.back()));
-    for(std::size_t i = 0; i < keys.size(); ++i) {
-      const int v = keys[i];
-      for(int k = first[std::size_t(v)]; k < first[std::size_t(v) + 1]; ++k) {
+    std::vector<Key_link> key_near(key_half.size());
+    for(std::size_t i = 0; i < keys.size(); ++i)
+      for(int k = key_first[i]; k < key_first[i + 1]; ++k) {
         // follow the chain to the next junction or end (a chain entered from
         // a junction cannot close on itself without one)
-        int l = at(k), node = near[std::size_t(k)].node;
-        double length = links[std::size_t(l)].length;
-        while(key_of[std::size_t(node)] < 0) {
-          const int f = first[std::size_t(node)];
-          const int next = at(f) == l ? f + 1 : f;
-          l = at(next);
-          length += links[std::size_t(l)].length;
-          node = near[std::size_t(next)].node;
+        int from = keys[i], h = key_half[std::size_t(k)];
+        int to = end_of(h, from);
+        double length = links[std::size_t(h >> 1)].length;
+        while(key_of[std::size_t(to)] < 0) {
+          const Node_state& x = node[std::size_t(to)];
+          h = x.halves ^ h ^ 1;
+          const int next = x.nodes ^ from;
+          from = to;
+          to = next;
+          length += links[std::size_t(h >> 1)].length;
         }
-        key_near[std::size_t(key_first[i] + (k - first[std::size_t(v)]))] = Key_link{key_of[std::size_t(node)], length};
+        key_near[std::size_t(k)] = Key_link{key_of[std::size_t(to)], length};
       }
-    }
     // the end farthest from an end, along the curves (Dijkstra); on a tie the
     // first in the order of the nodes
     auto farthest = [&](int source) {
@@ -482,7 +473,7 @@ Medial_axis_centerline_2<K> medial_axis_centerline_2(const Pruned_medial_axis_2<
       int best = source;
       double best_dist = 0;
       for(std::size_t i = 0; i < keys.size(); ++i)
-        if(incident(keys[i]).size() == 1 && dist[i] > best_dist && dist[i] != std::numeric_limits<double>::infinity()) {
+        if(degree(keys[i]) == 1 && dist[i] > best_dist && dist[i] != std::numeric_limits<double>::infinity()) {
           best = keys[i];
           best_dist = dist[i];
         }
@@ -491,79 +482,74 @@ Medial_axis_centerline_2<K> medial_axis_centerline_2(const Pruned_medial_axis_2<
     end_a = farthest(start);
     end_b = farthest(end_a);
   }
-  const bool a_is_end = incident(end_a).size() == 1, b_is_end = incident(end_b).size() == 1;
+  const bool a_is_end = degree(end_a) == 1, b_is_end = degree(end_b) == 1;
+  // the links at the two ends
+  const int end_link_a = a_is_end ? node[std::size_t(end_a)].halves >> 1 : -1;
+  const int end_link_b = b_is_end ? node[std::size_t(end_b)].halves >> 1 : -1;
 
   // peel the side branches: remove the ends other than end_a and end_b
-  std::vector<int> degree_left(static_cast<std::size_t>(n_nodes));
-  std::vector<char> removed_link(links.size(), 0), removed_node(n_nodes, 0);
+  // (a node's one link left is its exclusive or of halves)
+  std::vector<char> removed_link(links.size(), 0);
   std::deque<int> leaves;
-  for(int v = 0; v < n_nodes; ++v) {
-    degree_left[std::size_t(v)] = int(incident(v).size());
-    if(degree_left[std::size_t(v)] == 1 && v != end_a && v != end_b) leaves.push_back(v);
-  }
-  auto degree = [&](int v) { return degree_left[std::size_t(v)]; };
+  for(int v : keys)
+    if(degree(v) == 1 && v != end_a && v != end_b) leaves.push_back(v);
   while(!leaves.empty()) {
     const int v = leaves.front();
     leaves.pop_front();
-    if(removed_node[v] || degree(v) != 1) continue;
-    removed_node[v] = 1;
-    for(int l : incident(v)) {
-      if(removed_link[l]) continue;
-      removed_link[l] = 1;
-      const int o = other(l, v);
-      if(--degree_left[std::size_t(o)] == 1 && o != end_a && o != end_b) leaves.push_back(o);
-    }
+    Node_state& x = node[std::size_t(v)];
+    if(x.degree != 1) continue;
+    const int h = x.halves, o = x.nodes;
+    removed_link[std::size_t(h >> 1)] = 1;
+    x = Node_state{0, 0, 0};
+    Node_state& y = node[std::size_t(o)];
+    y.halves ^= h ^ 1;
+    y.nodes ^= v;
+    if(--y.degree == 1 && o != end_a && o != end_b) leaves.push_back(o);
   }
-  // The step of the walks below: next[k], for the incidence k of a link at
-  // a node, is the incidence by which a path goes on at the link's other
-  // node, -1 if that node is a junction or an end.  Set up in parallel
-  // (each node writes the entries of its own two links), so that a step of
-  // a walk reads one place instead of the node's degree, its incidences and
-  // their links' states.
-  auto live = [&](int k) { return !removed_link[std::size_t(at(k))]; };
-  auto next = Progressive_medial_axes::internal::parallel_filled(near.size(), -1);
-  Progressive_medial_axes::internal::parallel_blocks(std::size_t(n_nodes), [&](std::size_t b, std::size_t e) {
-    for(std::size_t v = b; v < e; ++v) {
-      if(degree_left[v] != 2) continue;
-      int j[2], c = 0;
-      for(int k = first[v]; k < first[v + 1]; ++k)
-        if(live(k)) j[c++] = k;
-      next[std::size_t(twin(j[0]))] = j[1];
-      next[std::size_t(twin(j[1]))] = j[0];
+  auto live = [&](int h) { return !removed_link[std::size_t(h >> 1)]; };
+  // the first live outgoing half of a node in the order of the halves, by a
+  // scan of the links (for a node of degree 2, once)
+  auto first_live_half = [&](int v) {
+    for(int i = 0; i < int(links.size()); ++i) {
+      if(removed_link[std::size_t(i)]) continue;
+      if(links[std::size_t(i)].a == v) return 2 * i;
+      if(links[std::size_t(i)].b == v) return 2 * i + 1;
     }
-  });
+    return -1;
+  };
   // a junction or end of the component of end_a, if it has one (end_a can
   // be a node of degree 2 when the axis has no end)
   int root = end_a;
   if(degree(end_a) == 2) {
-    int k = first[std::size_t(end_a)];
-    while(!live(k)) ++k;
-    int v = near[std::size_t(k)].node;
+    int h = first_live_half(end_a), from = end_a, v = end_of(h, end_a);
     while(degree(v) == 2 && v != end_a) {
-      k = next[std::size_t(k)];
-      v = near[std::size_t(k)].node;
+      const Node_state& x = node[std::size_t(v)];
+      h = x.halves ^ h ^ 1;
+      const int next = x.nodes ^ from;
+      from = v;
+      v = next;
     }
     root = v;
   }
   // The paths: the maximal chains between nodes of degree other than 2, of
   // the component of end_a only.  A chain is walked from its start (a live
-  // incidence at a junction or an end) that comes first in the order:
-  // root's, then by node.  So the path at an end of the centerline starts
-  // there, and the paths come in that order.
+  // outgoing half at a junction or an end) that comes first in the order:
+  // root's, then by node, then by half.  So the path at an end of the
+  // centerline starts there, and the paths come in that order.
   // A step of a walk is a read that depends on the step before it (a
   // random place in memory, for most steps): the walks are interleaved,
   // Lanes at a time, so that their reads overlap.  Each chain is met from
   // both of its starts; the later one skips it (or, when both were walked
   // at once, drops it).
-  auto half = [&](int k) { return near[std::size_t(k)].half; };
   if(degree(root) == 2) {   // a cycle without a junction
     std::vector<int> halves;
-    int k = first[std::size_t(root)];
-    while(!live(k)) ++k;
+    int h = first_live_half(root), from = root;
     while(true) {
-      halves.push_back(half(k));
-      if(near[std::size_t(k)].node == root) break;
-      k = next[std::size_t(k)];
+      halves.push_back(h);
+      const int v = end_of(h, from);
+      if(v == root) break;
+      h = node[std::size_t(v)].halves ^ h ^ 1;
+      from = v;
     }
     const std::size_t n = halves.size();
     out.halves_ = std::make_shared<const std::vector<std::vector<int> > >(1, std::move(halves));
@@ -572,37 +558,40 @@ Medial_axis_centerline_2<K> medial_axis_centerline_2(const Pruned_medial_axis_2<
     out.set_pieces(path, 0, 0, n);
     out.paths_.push_back(path);
   } else {
-    std::vector<int> starts, start_node;
+    std::vector<int> starts, start_key;
     auto add_starts = [&](int v) {
-      for(int k = first[std::size_t(v)]; k < first[std::size_t(v) + 1]; ++k)
-        if(live(k)) {
-          starts.push_back(k);
-          start_node.push_back(v);
+      const int i = key_of[std::size_t(v)];
+      for(int k = key_first[std::size_t(i)]; k < key_first[std::size_t(i) + 1]; ++k)
+        if(live(key_half[std::size_t(k)])) {
+          starts.push_back(key_half[std::size_t(k)]);
+          start_key.push_back(i);
         }
     };
     add_starts(root);
     const std::size_t root_starts = starts.size();
-    for(int v = 0; v < n_nodes; ++v)
+    for(int v : keys)
       if(v != root && degree(v) != 2) add_starts(v);
-    // whether the start at position i comes before incidence f (at node t)
-    // in that order
+    // whether the start at position i comes before the outgoing half f of
+    // the key t in that order
+    const int root_key = key_of[std::size_t(root)];
     auto before = [&](std::size_t i, int f, int t) {
-      const bool ri = i < root_starts, rf = t == root;
-      return ri != rf ? ri : starts[i] < f;
+      const bool ri = i < root_starts, rf = t == root_key;
+      if(ri != rf) return ri;
+      return start_key[i] != t ? start_key[i] < t : starts[i] < f;
     };
     // a start whose chain is walked (written and read by the parts at
     // once: a part that misses a mark walks the chain again and drops it)
-    std::unique_ptr<std::atomic<char>[]> done(new std::atomic<char>[near.size()]());
+    std::unique_ptr<std::atomic<char>[]> done(new std::atomic<char>[2 * links.size()]());
     // by part, the halves of its kept chains, one after the other (the
     // pieces of the paths)
     std::vector<std::vector<int> > seq(parts);
-    struct Chain { std::size_t part, begin, end; int to; };
+    struct Chain { std::size_t part, begin, end; int to; };   // to: the key at its end
     std::vector<Chain> chains(starts.size(), Chain{0, 0, 0, -1});   // by start
-    Progressive_medial_axes::internal::parallel_parts(starts.size(), parts, [&](std::size_t part, std::size_t b, std::size_t e) {
+    parallel_parts(starts.size(), parts, [&](std::size_t part, std::size_t b, std::size_t e) {
       std::vector<int>& out_seq = seq[part];
       out_seq.reserve(links.size() / parts);
       constexpr int Lanes = 16;
-      struct Lane { int at = -1, k = 0; std::vector<int> halves; };
+      struct Lane { int at = -1, h = 0, from = 0, to = 0; std::vector<int> halves; };
       Lane lanes[Lanes];
       std::size_t next_start = b;
       int busy = 0;
@@ -613,7 +602,10 @@ Medial_axis_centerline_2<K> medial_axis_centerline_2(const Pruned_medial_axis_2<
           return;
         }
         x.at = int(next_start);
-        x.k = starts[next_start++];
+        x.h = starts[next_start];
+        x.from = keys[std::size_t(start_key[next_start++])];
+        x.to = end_of(x.h, x.from);
+        prefetch(&node[std::size_t(x.to)]);
         x.halves.clear();
         ++busy;
       };
@@ -621,20 +613,21 @@ Medial_axis_centerline_2<K> medial_axis_centerline_2(const Pruned_medial_axis_2<
       while(busy > 0)
         for(Lane& x : lanes) {
           if(x.at < 0) continue;
-          const int k = x.k;
-          x.halves.push_back(half(k));
-          const int n = next[std::size_t(k)];
-          if(n >= 0) {
-            x.k = n;
-            Progressive_medial_axes::internal::prefetch(&next[std::size_t(n)]);
-            Progressive_medial_axes::internal::prefetch(&near[std::size_t(n)]);
+          x.halves.push_back(x.h);
+          const Node_state& s = node[std::size_t(x.to)];
+          if(s.degree == 2) {
+            x.h = s.halves ^ x.h ^ 1;
+            const int next = s.nodes ^ x.from;
+            x.from = x.to;
+            x.to = next;
+            prefetch(&node[std::size_t(next)]);
             continue;
           }
-          // the chain ends at incidence f of its last node
-          const int f = twin(k);
-          if(before(std::size_t(x.at), f, near[std::size_t(k)].node)) {
+          // the chain ends at the key of x.to, by its outgoing half f
+          const int f = x.h ^ 1, t = key_of[std::size_t(x.to)];
+          if(before(std::size_t(x.at), f, t)) {
             done[std::size_t(f)].store(1, std::memory_order_relaxed);
-            chains[std::size_t(x.at)] = Chain{part, out_seq.size(), out_seq.size() + x.halves.size(), near[std::size_t(k)].node};
+            chains[std::size_t(x.at)] = Chain{part, out_seq.size(), out_seq.size() + x.halves.size(), t};
             out_seq.insert(out_seq.end(), x.halves.begin(), x.halves.end());
           }
           --busy;
@@ -642,20 +635,20 @@ Medial_axis_centerline_2<K> medial_axis_centerline_2(const Pruned_medial_axis_2<
         }
     });
     // the chains of the component of root (the axis of a polygon whose
-    // ring touches itself can have several components)
-    std::vector<int> component(static_cast<std::size_t>(n_nodes));
+    // ring touches itself can have several components), by keys
+    std::vector<int> component(keys.size());
     std::iota(component.begin(), component.end(), 0);
     auto find = [&](int x) {
       while(component[std::size_t(x)] != x) x = component[std::size_t(x)] = component[std::size_t(component[std::size_t(x)])];
       return x;
     };
     for(std::size_t i = 0; i < chains.size(); ++i)
-      if(chains[i].to >= 0) component[std::size_t(find(start_node[i]))] = find(chains[i].to);
-    // the paths, in the order of their starts, built in parallel
+      if(chains[i].to >= 0) component[std::size_t(find(start_key[i]))] = find(chains[i].to);
+    // the paths, in the order of their starts
     std::vector<std::size_t> kept;
-    const int root_component = find(root);
+    const int root_component = find(root_key);
     for(std::size_t i = 0; i < chains.size(); ++i)
-      if(chains[i].to >= 0 && find(start_node[i]) == root_component) kept.push_back(i);
+      if(chains[i].to >= 0 && find(start_key[i]) == root_component) kept.push_back(i);
     out.paths_.resize(kept.size());
     out.halves_ = std::make_shared<const std::vector<std::vector<int> > >(std::move(seq));
     for(std::size_t i = 0; i < kept.size(); ++i) {
@@ -674,7 +667,7 @@ Medial_axis_centerline_2<K> medial_axis_centerline_2(const Pruned_medial_axis_2<
       auto is_end_at = [&](const Piece& x, double s) {
         for(int v : {end_a, end_b}) {
           if(!(v == end_a ? a_is_end : b_is_end)) continue;
-          const int l = incident(v)[0];
+          const int l = v == end_a ? end_link_a : end_link_b;
           const Curve& c = curves[l];
           if(c.halfedge == x.halfedge && (links[l].a == v ? c.begin : c.end) == s) return true;
         }
