@@ -646,33 +646,21 @@ Pruned_medial_axis_2<K> prune_medial_axis_2(const Medial_axis_significance_2<K>&
     return c.length_at(q);
   };
 
+  // Which curves the fire reaches are kept, and how, in one pass over the
+  // nodes, in the reverse of the order of fire (not of their times: a curve
+  // can be shorter than the precision of a time).  Nodes that never burn are
+  // kept; a node is kept if the whole curve it sends its front into is, and
+  // the node at its other end.  The pass reads the nodes only: the curves it
+  // keeps, and their cuts, are made after it, in parallel.
   std::vector<char> kept(nodes.size(), 0);
-  // nodes that never burn are kept; the others in the reverse of the order
-  // of fire (not of their times: a curve can be shorter than the precision
-  // of a time): a node is kept if the whole curve it sends its front into
-  // is, and the node at its other end
   for(int v = 0; v < int(nodes.size()); ++v)
     if(nodes[v].time == inf) kept[v] = 1;
   std::vector<char> arc_done(arcs.size(), 0);
-  std::size_t whole = 0;   // kept curves that are not cut
-  auto add_curve = [&](const Arc& a, double b, double e) {
-    Curve c;
-    c.halfedge = sig.halfedge(a);
-    c.full_length = a.length;
-    c.begin = (std::max)(0.0, b);
-    c.end = (std::min)(a.length, e);
-    c.et_begin = c.begin > 0 ? et_of(Sig::time_along(a, c.begin), c.halfedge.radius_at(c.begin))
-                             : et_of(nodes[a.u].time, nodes[a.u].radius);
-    c.et_end = c.end < a.length ? et_of(Sig::time_along(a, c.end), c.halfedge.radius_at(c.end))
-                                : et_of(nodes[a.w].time, nodes[a.w].radius);
-    if(c.end > c.begin || (c.begin == 0 && c.end == a.length)) {
-      fired.push_back(c);
-      whole += std::size_t(!c.cut_at_begin() && !c.cut_at_end());
-      const int u = c.cut_at_begin() ? out.number_of_nodes_++ : a.u;
-      const int w = c.cut_at_end() ? out.number_of_nodes_++ : a.w;
-      fired_links.push_back({u, w, c.length()});
-    }
-  };
+  // a kept curve that the fire reaches: whole, cut at the end where its
+  // front enters (the node's front, from_u or not), or where the fronts
+  // from both ends meet inside it, cut at either end or not (the ends kept)
+  struct Kept_arc { int arc; int node; bool meets, from_u, keep_u, keep_w; double meet; };
+  std::vector<Kept_arc> to_make;
   const std::vector<int>& order = sig.order_of_fire();
   for(auto it = order.rbegin(); it != order.rend(); ++it) {
     const int v = *it;
@@ -688,13 +676,10 @@ Pruned_medial_axis_2<K> prune_medial_axis_2(const Medial_axis_significance_2<K>&
         out.points_.push_back(sig.halfedge(a).point_at(m));
         continue;
       }
-      const double pmeet = sig.halfedge(a).geometry().parameter_at_length(m);
       const bool keep_u = margin_at_vertex(a.u) >= 0, keep_w = margin_at_vertex(a.w) >= 0;
-      const double b = keep_u ? 0 : cut(a, a.start[0], true, pmeet);
-      const double e = keep_w ? a.length : cut(a, a.start[1], false, 1 - pmeet);
       if(keep_u) kept[a.u] = 1;
       if(keep_w) kept[a.w] = 1;
-      add_curve(a, b, e);
+      to_make.push_back(Kept_arc{n.out, v, true, false, keep_u, keep_w, m});
       continue;
     }
     // the front runs to the far end (from the node's own record: the curve
@@ -702,15 +687,48 @@ Pruned_medial_axis_2<K> prune_medial_axis_2(const Medial_axis_significance_2<K>&
     if(!kept[n.far]) continue;
     // the condition at the far end, reached by this curve's front
     if(margin(n.time + n.out_length, nodes[n.far].radius) < 0) continue;
-    const Arc& a = arcs[n.out];
-    const bool from_u = (a.u == v);
-    if(margin_at_vertex(v) >= 0) {
-      kept[v] = 1;
-      add_curve(a, 0, a.length);
-    } else {
-      const double c = cut(a, n.time, from_u, 1);
-      if(from_u) add_curve(a, c, a.length);
-      else add_curve(a, 0, c);
+    const bool keep = margin_at_vertex(v) >= 0;
+    if(keep) kept[v] = 1;
+    to_make.push_back(Kept_arc{n.out, v, false, arcs[n.out].u == v, keep, keep, 0});
+  }
+  // the curves, and their cuts (a bisection each), in parallel where the
+  // numbers are doubles
+  std::vector<Curve> made(to_make.size());
+  Progressive_medial_axes::internal::parallel_blocks(to_make.size(), [&](std::size_t b, std::size_t e) {
+    for(std::size_t i = b; i < e; ++i) {
+      const Kept_arc& x = to_make[i];
+      const Arc& a = arcs[std::size_t(x.arc)];
+      double from = 0, to = a.length;
+      if(x.meets) {
+        const double pmeet = sig.halfedge(a).geometry().parameter_at_length(x.meet);
+        if(!x.keep_u) from = cut(a, a.start[0], true, pmeet);
+        if(!x.keep_w) to = cut(a, a.start[1], false, 1 - pmeet);
+      } else if(!x.keep_u) {
+        const double c = cut(a, nodes[std::size_t(x.node)].time, x.from_u, 1);
+        if(x.from_u) from = c;
+        else to = c;
+      }
+      Curve& c = made[i];
+      c.halfedge = sig.halfedge(a);
+      c.full_length = a.length;
+      c.begin = (std::max)(0.0, from);
+      c.end = (std::min)(a.length, to);
+      c.et_begin = c.begin > 0 ? et_of(Sig::time_along(a, c.begin), c.halfedge.radius_at(c.begin))
+                               : et_of(nodes[a.u].time, nodes[a.u].radius);
+      c.et_end = c.end < a.length ? et_of(Sig::time_along(a, c.end), c.halfedge.radius_at(c.end))
+                                  : et_of(nodes[a.w].time, nodes[a.w].radius);
+    }
+  }, std::is_floating_point<typename Sig::Medial_axis::FT>::value);
+  std::size_t whole = 0;   // kept curves that are not cut
+  for(std::size_t i = 0; i < made.size(); ++i) {
+    const Curve& c = made[i];
+    const Arc& a = arcs[std::size_t(to_make[i].arc)];
+    if(c.end > c.begin || (c.begin == 0 && c.end == a.length)) {
+      fired.push_back(c);
+      whole += std::size_t(!c.cut_at_begin() && !c.cut_at_end());
+      const int u = c.cut_at_begin() ? out.number_of_nodes_++ : a.u;
+      const int w = c.cut_at_end() ? out.number_of_nodes_++ : a.w;
+      fired_links.push_back({u, w, c.length()});
     }
   }
   // The curves that no front enters, whole.  Their ends never burn (every
