@@ -17,7 +17,6 @@
 #include <CGAL/Progressive_medial_axis_2/Medial_axis_significance_2.h>
 
 #include <boost/container/vector.hpp>
-#include <boost/iterator/transform_iterator.hpp>
 
 #include <algorithm>
 #include <array>
@@ -85,46 +84,26 @@ public:
     double from = 0, to = 0;
     double length() const { return std::fabs(to - from); }
   };
-  /// \cond
-  typedef typename Pruned_medial_axis_2<K>::Curve Pruned_curve;
-  // The piece of a half of a kept curve of the pruned axis: 2 k for kept
-  // curve k in its direction, 2 k + 1 backwards.
-  struct Piece_of_half {
-    const Pruned_curve* curves = nullptr;
-    Piece operator()(int h) const
-    {
-      const Pruned_curve& c = curves[std::size_t(h >> 1)];
-      Piece p;
-      p.halfedge = c.halfedge;
-      p.from = c.begin;
-      p.to = c.end;
-      if(h & 1) std::swap(p.from, p.to);
-      return p;
-    }
-  };
-  /// \endcond
-  /// The pieces of a path: a random-access range of `Piece` values, made on
-  /// the fly from storage that the centerline and its copies share (valid as
-  /// long as one of them lives).  A path of a plate of 100,000 holes has a
-  /// few pieces, and there are 300,000 paths: they are halves of the pruned
-  /// axis's curves in a few arrays rather than a vector of pieces each.
+  /// The pieces of a path: a random-access range over storage that the
+  /// centerline and its copies share (valid as long as one of them lives).
+  /// One array holds the pieces of all the paths: a plate of 100,000 holes
+  /// has 300,000 paths of a few pieces each.
   class Piece_range
   {
   public:
-    typedef boost::transform_iterator<Piece_of_half, const int*, Piece, Piece> const_iterator;
+    typedef const Piece* const_iterator;
     typedef const_iterator iterator;
-    const_iterator begin() const { return const_iterator(b_, f_); }
-    const_iterator end() const { return const_iterator(e_, f_); }
+    const_iterator begin() const { return b_; }
+    const_iterator end() const { return e_; }
     std::size_t size() const { return std::size_t(e_ - b_); }
     bool empty() const { return b_ == e_; }
-    Piece operator[](std::size_t i) const { return f_(b_[i]); }
-    Piece front() const { return f_(*b_); }
-    Piece back() const { return f_(e_[-1]); }
+    const Piece& operator[](std::size_t i) const { return b_[i]; }
+    const Piece& front() const { return *b_; }
+    const Piece& back() const { return e_[-1]; }
 
   private:
     friend class Medial_axis_centerline_2;
-    const int *b_ = nullptr, *e_ = nullptr;
-    Piece_of_half f_;
+    const Piece *b_ = nullptr, *e_ = nullptr;
   };
   /// One path of the centerline.
   struct Path {
@@ -225,17 +204,13 @@ public:
   /// \cond
   explicit Medial_axis_centerline_2(const Medial_axis& ma) : ma_(ma) {}
   std::vector<Path> paths_;
-  // The pieces of the paths: ranges of the arrays of halves (shared by the
-  // copies of the centerline) over the kept curves (shared with the pruned
-  // axis).
-  void set_pieces(Path& p, std::size_t array, std::size_t b, std::size_t e) const
+  // The pieces of all the paths, one after the other, written in parallel.
+  void set_pieces(Path& p, std::size_t b, std::size_t e) const
   {
-    p.pieces.b_ = (*halves_)[array].data() + b;
-    p.pieces.e_ = (*halves_)[array].data() + e;
-    p.pieces.f_.curves = curves_.begin();
+    p.pieces.b_ = pieces_.begin() + b;
+    p.pieces.e_ = pieces_.begin() + e;
   }
-  Progressive_medial_axes::internal::Written_once_array<Pruned_curve> curves_;
-  std::shared_ptr<const std::vector<std::vector<int> > > halves_;
+  Progressive_medial_axes::internal::Written_once_array<Piece> pieces_;
   static Point point_of(const Piece& x, double s)
   {
     if(s <= 0) return Medial_axis::to_xy(x.halfedge.source().point());
@@ -328,7 +303,6 @@ Medial_axis_centerline_2<K> medial_axis_centerline_2(const Pruned_medial_axis_2<
   typedef typename Pruned_medial_axis_2<K>::Curve Curve;
   Centerline out(pruned.medial_axis());
   const auto& curves = pruned.curves();
-  out.curves_ = curves;
   if(curves.empty()) return out;
 
   // the graph: the nodes of the significance's graph at the ends of the
@@ -541,6 +515,15 @@ Medial_axis_centerline_2<K> medial_axis_centerline_2(const Pruned_medial_axis_2<
   // Lanes at a time, so that their reads overlap.  Each chain is met from
   // both of its starts; the later one skips it (or, when both were walked
   // at once, drops it).
+  auto piece_of = [&](int h) {   // the kept curve of a half, walked in its direction
+    const Curve& c = curves[std::size_t(h >> 1)];
+    Piece p;
+    p.halfedge = c.halfedge;
+    p.from = c.begin;
+    p.to = c.end;
+    if(h & 1) std::swap(p.from, p.to);
+    return p;
+  };
   if(degree(root) == 2) {   // a cycle without a junction
     std::vector<int> halves;
     int h = first_live_half(root), from = root;
@@ -551,11 +534,11 @@ Medial_axis_centerline_2<K> medial_axis_centerline_2(const Pruned_medial_axis_2<
       h = node[std::size_t(v)].halves ^ h ^ 1;
       from = v;
     }
-    const std::size_t n = halves.size();
-    out.halves_ = std::make_shared<const std::vector<std::vector<int> > >(1, std::move(halves));
+    out.pieces_ = Progressive_medial_axes::internal::Written_once_array<Piece>(halves.size());
+    for(std::size_t i = 0; i < halves.size(); ++i) out.pieces_.write(i, piece_of(halves[i]));
     Path path;
     path.closed = true;
-    out.set_pieces(path, 0, 0, n);
+    out.set_pieces(path, 0, halves.size());
     out.paths_.push_back(path);
   } else {
     std::vector<int> starts, start_key;
@@ -582,8 +565,7 @@ Medial_axis_centerline_2<K> medial_axis_centerline_2(const Pruned_medial_axis_2<
     // a start whose chain is walked (written and read by the parts at
     // once: a part that misses a mark walks the chain again and drops it)
     std::unique_ptr<std::atomic<char>[]> done(new std::atomic<char>[2 * links.size()]());
-    // by part, the halves of its kept chains, one after the other (the
-    // pieces of the paths)
+    // by part, the halves of its kept chains, one after the other
     std::vector<std::vector<int> > seq(parts);
     struct Chain { std::size_t part, begin, end; int to; };   // to: the key at its end
     std::vector<Chain> chains(starts.size(), Chain{0, 0, 0, -1});   // by start
@@ -644,17 +626,28 @@ Medial_axis_centerline_2<K> medial_axis_centerline_2(const Pruned_medial_axis_2<
     };
     for(std::size_t i = 0; i < chains.size(); ++i)
       if(chains[i].to >= 0) component[std::size_t(find(start_key[i]))] = find(chains[i].to);
-    // the paths, in the order of their starts
     std::vector<std::size_t> kept;
     const int root_component = find(root_key);
     for(std::size_t i = 0; i < chains.size(); ++i)
       if(chains[i].to >= 0 && find(start_key[i]) == root_component) kept.push_back(i);
+    // the paths, in the order of their starts, their pieces written in
+    // parallel (the curves read in no order: asked for ahead)
     out.paths_.resize(kept.size());
-    out.halves_ = std::make_shared<const std::vector<std::vector<int> > >(std::move(seq));
-    for(std::size_t i = 0; i < kept.size(); ++i) {
-      const Chain& c = chains[kept[i]];
-      out.set_pieces(out.paths_[i], c.part, c.begin, c.end);
-    }
+    std::vector<std::size_t> offset(kept.size() + 1, 0);
+    for(std::size_t i = 0; i < kept.size(); ++i)
+      offset[i + 1] = offset[i] + (chains[kept[i]].end - chains[kept[i]].begin);
+    out.pieces_ = Progressive_medial_axes::internal::Written_once_array<Piece>(offset.back());
+    Progressive_medial_axes::internal::parallel_blocks(kept.size(), [&](std::size_t b, std::size_t e) {
+      for(std::size_t i = b; i < e; ++i) {
+        const Chain& c = chains[kept[i]];
+        const std::vector<int>& halves = seq[c.part];
+        for(std::size_t j = c.begin; j < c.end; ++j) {
+          if(j + 16 < halves.size()) prefetch(&curves[std::size_t(halves[j + 16] >> 1)]);
+          out.pieces_.write(offset[i] + (j - c.begin), piece_of(halves[j]));
+        }
+        out.set_pieces(out.paths_[i], offset[i], offset[i + 1]);
+      }
+    });
   }
 
   if(extend) {
