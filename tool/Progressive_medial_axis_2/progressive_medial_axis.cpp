@@ -1006,8 +1006,8 @@ int main(int argc, char** argv)
   // than give it back to the system (release_memory_of_large_one_shots()).
   // And one heap for all the threads (M_ARENA_MAX): what the threads of the
   // axis freed in their own heaps is then there for the analysis, which
-  // allocates on this thread (RESULTS.md, "The analysis's share, eighteenth
-  // session").
+  // allocates on this thread (RESULTS.md, "The analysis's share (issue 14),
+  // eighteenth session").
   if(o.analysed()) {
     mallopt(M_MMAP_THRESHOLD, 32 << 20);
     mallopt(M_MMAP_MAX, 0);

@@ -366,6 +366,15 @@ Medial_axis_centerline_2<K> medial_axis_centerline_2(const Pruned_medial_axis_2<
     const Link& l = links[std::size_t(h >> 1)];
     return l.a ^ l.b ^ v;
   };
+  // one step of a walk on through the node `to`, of degree 2, reached from
+  // the node `from` by half h
+  auto step = [&](int& from, int& h, int& to) {
+    const Node_state& x = node[std::size_t(to)];
+    h = x.halves ^ h ^ 1;
+    const int next = x.nodes ^ from;
+    from = to;
+    to = next;
+  };
   // The junctions and ends (the nodes of degree neither 0 nor 2), and their
   // outgoing halves in the order of the links (and of the halves).  Set up
   // like the states.
@@ -414,11 +423,7 @@ Medial_axis_centerline_2<K> medial_axis_centerline_2(const Pruned_medial_axis_2<
         int to = end_of(h, from);
         double length = links[std::size_t(h >> 1)].length;
         while(key_of[std::size_t(to)] < 0) {
-          const Node_state& x = node[std::size_t(to)];
-          h = x.halves ^ h ^ 1;
-          const int next = x.nodes ^ from;
-          from = to;
-          to = next;
+          step(from, h, to);
           length += links[std::size_t(h >> 1)].length;
         }
         key_near[std::size_t(k)] = Key_link{key_of[std::size_t(to)], length};
@@ -496,13 +501,7 @@ Medial_axis_centerline_2<K> medial_axis_centerline_2(const Pruned_medial_axis_2<
   int root = end_a;
   if(degree(end_a) == 2) {
     int h = first_live_half(end_a), from = end_a, v = end_of(h, end_a);
-    while(degree(v) == 2 && v != end_a) {
-      const Node_state& x = node[std::size_t(v)];
-      h = x.halves ^ h ^ 1;
-      const int next = x.nodes ^ from;
-      from = v;
-      v = next;
-    }
+    while(degree(v) == 2 && v != end_a) step(from, h, v);
     root = v;
   }
   // The paths: the maximal chains between nodes of degree other than 2, of
@@ -526,13 +525,11 @@ Medial_axis_centerline_2<K> medial_axis_centerline_2(const Pruned_medial_axis_2<
   };
   if(degree(root) == 2) {   // a cycle without a junction
     std::vector<int> halves;
-    int h = first_live_half(root), from = root;
+    int h = first_live_half(root), from = root, v = end_of(h, root);
     while(true) {
       halves.push_back(h);
-      const int v = end_of(h, from);
       if(v == root) break;
-      h = node[std::size_t(v)].halves ^ h ^ 1;
-      from = v;
+      step(from, h, v);
     }
     out.pieces_ = Progressive_medial_axes::internal::Written_once_array<Piece>(halves.size());
     for(std::size_t i = 0; i < halves.size(); ++i) out.pieces_.write(i, piece_of(halves[i]));
@@ -596,13 +593,9 @@ Medial_axis_centerline_2<K> medial_axis_centerline_2(const Pruned_medial_axis_2<
         for(Lane& x : lanes) {
           if(x.at < 0) continue;
           x.halves.push_back(x.h);
-          const Node_state& s = node[std::size_t(x.to)];
-          if(s.degree == 2) {
-            x.h = s.halves ^ x.h ^ 1;
-            const int next = s.nodes ^ x.from;
-            x.from = x.to;
-            x.to = next;
-            prefetch(&node[std::size_t(next)]);
+          if(degree(x.to) == 2) {
+            step(x.from, x.h, x.to);
+            prefetch(&node[std::size_t(x.to)]);
             continue;
           }
           // the chain ends at the key of x.to, by its outgoing half f
