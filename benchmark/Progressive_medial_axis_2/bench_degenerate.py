@@ -8,7 +8,9 @@ regular polygons and glyphs, against Epick and Segment_Delaunay_graph_2.
 Needs a build in build/ (scripts/test.sh or cmake --build build).  Generates
 the shapes with make_degenerate (the sizes of the degenerate table and about
 10 times them, in benchmark/Progressive_medial_axis_2/data/degenerate/) and
-make_glyphs.py (several fonts, data/glyphs/), then measures for every shape:
+make_glyphs.py (several fonts, data/glyphs/, and with 80 segments a curve and
+2 decimals, about 10 times the vertices, data/glyphs10/), then measures for
+every shape:
 
 - ours: the whole `progressive_medial_axis` process with the default traits
   (exact decisions), median of N runs (at least 21 for processes under
@@ -120,6 +122,53 @@ def fmt(t, limit=None):
     return "%.3g" % t if t >= 0.001 else "%.1e" % t
 
 
+def glyph_rows(a, lines, glyphs, make_args, label):
+    """Rows of the glyph table: the glyphs of every font of FONTS written by
+    make_glyphs.py (with `make_args`) into `glyphs`, one row a font."""
+    subprocess.run([sys.executable, os.path.join(ROOT, "benchmark/Progressive_medial_axis_2/make_glyphs.py"),
+                    glyphs, "--fonts", FONTS] + make_args, check=True, stdout=subprocess.DEVNULL)
+    by_font = {}
+    for f in sorted(os.listdir(glyphs)):
+        if f.endswith(".wkt") and not f.endswith("_all.wkt"):
+            by_font.setdefault(f.split("_")[0], []).append(os.path.join(glyphs, f))
+    for font, files in sorted(by_font.items()):
+        # all glyphs of the font in one file, as a CAM user hands a
+        # font's outlines to the tool: one process, one axis per glyph
+        # (ids p<k>:...), in parallel over the glyphs
+        polygons = []
+        for path in files:
+            with open(path) as g:
+                polygons.append(g.read().strip())
+        whole = os.path.join(glyphs, font + "_all.wkt")
+        with open(whole, "w") as g:
+            g.write("GEOMETRYCOLLECTION (" + ", ".join(polygons) + ")\n")
+        ours, _ = median_process([TOOL, whole], a.runs, a.timeout)
+        epick, _ = median_process([TOOL, "--traits", "epick", whole], a.runs, a.timeout)
+        s = stats_of(median_process([TOOL, "--stats", whole], 1, a.timeout)[1])
+        nested = int(s.get("filter_exact_evaluations", 0)) + int(s.get("filter_exact_comparisons", 0))
+        # in-process, glyph by glyph: the one-shot on one thread and SDG's
+        # construction, same bench_time run
+        p = subprocess.run([BENCH_TIME, "--runs", str(a.runs), "--timeout", str(a.timeout), "--no-baseline",
+                            "--methods", "pma_oneshot_1,sdg"] + files,
+                           stdout=subprocess.PIPE, stderr=subprocess.DEVNULL, text=True)
+        per = {}
+        vmax = 0
+        for line in p.stdout.splitlines()[1:]:
+            f = line.split("\t")
+            if len(f) > 4:
+                per.setdefault(f[0], {})[f[3]] = float(f[4])
+                vmax = max(vmax, int(f[1]))
+        sdg_sum = sum(v.get("sdg", 0) for v in per.values())
+        ours_sum = sum(v.get("pma_oneshot_1", 0) for v in per.values())
+        worst = max((v["pma_oneshot_1"] / v["sdg"] for v in per.values()
+                     if v.get("sdg", 0) > 0 and "pma_oneshot_1" in v), default=0)
+        row = "| %s%s | %d | %d | %s | %s | %.3g | %s | %.3g | %.2f | %d |" % (
+            font, label, len(files), vmax, fmt(ours, a.timeout), fmt(epick, a.timeout), sdg_sum,
+            "%.2f" % (ours / sdg_sum) if ours and sdg_sum else "-", ours_sum, worst, nested)
+        print(row, flush=True)
+        lines.append(row)
+
+
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--before", help="another build of progressive_medial_axis to compare with")
@@ -168,52 +217,15 @@ def main():
         lines.append(row)
 
     if not a.quick:
-        glyphs = os.path.join(DATA, "glyphs")
-        subprocess.run([sys.executable, os.path.join(ROOT, "benchmark/Progressive_medial_axis_2/make_glyphs.py"),
-                        glyphs, "--fonts", FONTS], check=True, stdout=subprocess.DEVNULL)
         lines.append("")
         lines.append("| glyph font | glyphs | vertices (max) | ours, one process | Epick, one process | SDG, sum of glyphs | ours / SDG | ours in-process, sum | in-process ours / SDG, worst glyph | nested decisions |")
         lines.append("|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|")
-        by_font = {}
-        for f in sorted(os.listdir(glyphs)):
-            if f.endswith(".wkt") and not f.endswith("_all.wkt"):
-                by_font.setdefault(f.split("_")[0], []).append(os.path.join(glyphs, f))
-        for font, files in sorted(by_font.items()):
-            # all glyphs of the font in one file, as a CAM user hands a
-            # font's outlines to the tool: one process, one axis per glyph
-            # (ids p<k>:...), in parallel over the glyphs
-            polygons = []
-            for path in files:
-                with open(path) as g:
-                    polygons.append(g.read().strip())
-            whole = os.path.join(glyphs, font + "_all.wkt")
-            with open(whole, "w") as g:
-                g.write("GEOMETRYCOLLECTION (" + ", ".join(polygons) + ")\n")
-            ours, _ = median_process([TOOL, whole], a.runs, a.timeout)
-            epick, _ = median_process([TOOL, "--traits", "epick", whole], a.runs, a.timeout)
-            s = stats_of(median_process([TOOL, "--stats", whole], 1, a.timeout)[1])
-            nested = int(s.get("filter_exact_evaluations", 0)) + int(s.get("filter_exact_comparisons", 0))
-            # in-process, glyph by glyph: the one-shot on one thread and SDG's
-            # construction, same bench_time run
-            p = subprocess.run([BENCH_TIME, "--runs", str(a.runs), "--timeout", str(a.timeout), "--no-baseline",
-                                "--methods", "pma_oneshot_1,sdg"] + files,
-                               stdout=subprocess.PIPE, stderr=subprocess.DEVNULL, text=True)
-            per = {}
-            vmax = 0
-            for line in p.stdout.splitlines()[1:]:
-                f = line.split("\t")
-                if len(f) > 4:
-                    per.setdefault(f[0], {})[f[3]] = float(f[4])
-                    vmax = max(vmax, int(f[1]))
-            sdg_sum = sum(v.get("sdg", 0) for v in per.values())
-            ours_sum = sum(v.get("pma_oneshot_1", 0) for v in per.values())
-            worst = max((v["pma_oneshot_1"] / v["sdg"] for v in per.values()
-                         if v.get("sdg", 0) > 0 and "pma_oneshot_1" in v), default=0)
-            row = "| %s | %d | %d | %s | %s | %.3g | %s | %.3g | %.2f | %d |" % (
-                font, len(files), vmax, fmt(ours, a.timeout), fmt(epick, a.timeout), sdg_sum,
-                "%.2f" % (ours / sdg_sum) if ours and sdg_sum else "-", ours_sum, worst, nested)
-            print(row, flush=True)
-            lines.append(row)
+        # the glyphs as make_glyphs.py writes them by default (8 segments a
+        # curve, integer coordinates), and about 10 times as many vertices
+        # (80 segments a curve, 2 decimals: finely flattened curves, where
+        # the one-shot takes boundary evolution)
+        glyph_rows(a, lines, os.path.join(DATA, "glyphs"), [], "")
+        glyph_rows(a, lines, os.path.join(DATA, "glyphs10"), ["--segments", "80", "--decimals", "2"], " x10")
 
     if a.out:
         with open(a.out, "w") as f:

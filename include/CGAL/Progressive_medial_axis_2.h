@@ -394,6 +394,98 @@ private:
 namespace Progressive_medial_axes {
 namespace internal {
 
+/// A one-shot of this many triangles or more, cut into `probe_seeds` parts
+/// or more, first measures what its merges cost
+/// (Divide_and_conquer::probe(): the first triangles of `probe_seeds`
+/// parts, built and dropped: a sixteenth of all, but at least
+/// `min_probe_triangles_per_part` and at most `max_probe_triangles_per_part`
+/// a part; fewer were blind to glyphs of 1,000 to 2,000 triangles, where a
+/// merge's cost grows with the part for the first few dozen triangles)...
+constexpr std::size_t min_probe_triangles = 1024;
+constexpr std::size_t probe_seeds = 4;
+constexpr std::size_t min_probe_triangles_per_part = 32;
+constexpr std::size_t max_probe_triangles_per_part = 48;
+/// ... and where a merge crosses `boundary_evolution_events_per_merge`
+/// cells or more on average, and `boundary_evolution_events_per_thread`
+/// per thread of the task arena, computes the axis by boundary evolution
+/// instead: the boundary simplified by discrete curve evolution, the
+/// coarsest shape's axis in one shot, then every vertex put back, the last
+/// removed first (Boundary_evolution.h).  Each vertex comes back next to
+/// edges of about its own scale, so a step crosses few cells however finely
+/// the boundary is sampled: 3 to 5 events a step.  On 2 threads, glyphs
+/// whose probe gave 15 events a merge or more took 0.06 to 1.02 times as
+/// long (a geometric mean of 0.31 or less); country outlines gave up to 13
+/// and would have taken up to twice as long: the divide and conquer runs
+/// in parallel, boundary evolution puts vertices back one at a time, and on
+/// cocircular vertices (a regular polygon) its steps cross all the cells
+/// around the centre (RESULTS.md, "Finely sampled curves", nineteenth
+/// session).
+constexpr double boundary_evolution_events_per_merge = 20;
+constexpr double boundary_evolution_events_per_thread = 10;
+
+// Counts the work of boundary evolution's steps.
+struct Boundary_evolution_counts {
+  Divide_and_conquer_counts merges;
+  std::size_t cuts = 0, splits = 0, crossings = 0;
+  void on_switch() { merges.on_switch(); }
+  void on_vanish() { merges.on_vanish(); }
+  void on_merge(const Merge_statistics& m) { merges.add(m); }
+  void on_cut(bool is_cut, const Cut_statistics& c)
+  {
+    ++(is_cut ? cuts : splits);
+    crossings += c.crossings + c.removed_vertices;
+    merges.redone_merges += c.redone_exactly ? 1 : 0;
+  }
+  std::size_t events() const { return merges.switches + merges.vanishings + crossings; }
+};
+
+/// The axis of `rings` by boundary evolution, all steps done, into `data`
+/// (empty), unless its events (switches, vanishings and the edges its cuts
+/// cross) exceed `budget`: then false, and `data` is to be dropped.
+template <class Traits>
+bool one_shot_by_boundary_evolution(const std::vector<std::vector<typename Traits::Kernel::Point_2> >& rings,
+                                    const Traits& traits, double budget,
+                                    Medial_axis_data<typename Traits::Point_2, typename Traits::FT>& data,
+                                    Progressive_medial_axis_statistics& stats)
+{
+  typedef Boundary_evolution<Traits> Driver;
+  const auto t0 = std::chrono::steady_clock::now();
+  auto removals = Driver::evolve(rings);
+  const auto t1 = std::chrono::steady_clock::now();
+  set_points(data, rings, traits.orientation_2_object());
+  Medial_axis_engine<Traits> engine(data, traits);
+  Driver driver(engine, std::move(removals));
+  driver.start();
+  const Divide_and_conquer_counts& start = driver.start_counts();
+  const auto t2 = std::chrono::steady_clock::now();
+  Boundary_evolution_counts steps;
+  const double start_events = double(start.switches + start.vanishings);
+  for(std::size_t k = 1; k <= driver.number_of_steps(); ++k) {
+    if(start_events + double(steps.events()) > budget)
+      return false;
+    driver.step(k, steps);
+  }
+  engine.resolve_pending();
+  auto seconds = [](std::chrono::steady_clock::time_point a, std::chrono::steady_clock::time_point b) {
+    return std::chrono::duration<double>(b - a).count();
+  };
+  Divide_and_conquer_counts all = start;
+  all.add(steps.merges);
+  copy_counts(stats, all);
+  stats.triangles = driver.number_of_triangles();
+  stats.evolution_seconds = seconds(t0, t1);
+  stats.cuts = steps.cuts;
+  stats.splits = steps.splits;
+  stats.recomputed_steps = driver.recomputed_steps();
+  stats.parts = start.parts;
+  stats.parts_seconds_sum = start.parts_seconds_sum;
+  stats.parts_seconds_max = start.parts_seconds_max;
+  // (the steps, one after the other, are sequential like the join)
+  stats.join_seconds = start.join_seconds + seconds(t2, std::chrono::steady_clock::now());
+  stats.boundary_evolution_one_shots = 1;
+  return true;
+}
+
 template <class Traits>
 Medial_axis_2<typename Traits::Kernel>
 one_shot_medial_axis(const std::vector<std::vector<typename Traits::Kernel::Point_2> >& rings, const Traits& traits,
@@ -465,7 +557,32 @@ one_shot_medial_axis(const std::vector<std::vector<typename Traits::Kernel::Poin
   t0 = std::chrono::steady_clock::now();
   data->hds.reserve(2 * data->points.size() + 16, 4 * data->points.size() + 16);
   Engine engine(*data, traits);
-  const Divide_and_conquer_counts counts = divide_and_conquer(engine, std::move(triangles), parts);
+  const std::size_t T = triangles.size();
+  const auto how = one_shot_parts<Traits>(parts, T);
+  Divide_and_conquer<Traits> driver(engine, std::move(triangles));
+  if(parts == 0 && T >= min_probe_triangles && how.first >= probe_seeds) {
+    // (the probe's decisions are counted in the filter statistics)
+    const std::size_t limit = (std::min)(max_probe_triangles_per_part,
+                                         (std::max)(min_probe_triangles_per_part, T / (16 * probe_seeds)));
+    const double events = driver.probe(how.first, probe_seeds, limit);
+    double threads = 1;
+#ifdef CGAL_PMA2_USE_TBB
+    threads = double((std::max)(1, tbb::this_task_arena::max_concurrency()));
+#endif
+    if(events >= (std::max)(boundary_evolution_events_per_merge, boundary_evolution_events_per_thread * threads)) {
+      // boundary evolution, unless it does more work than the divide and
+      // conquer would on these threads (at the probe's rate): then the
+      // divide and conquer
+      auto evolved = std::make_shared<Data>();
+      if(one_shot_by_boundary_evolution(rings, traits, events * double(T) / threads, *evolved, stats)) {
+        stats.merge_seconds = seconds_since(t0);
+        if(statistics)
+          *statistics = stats;
+        return Medial_axis_access::make<Kernel>(std::shared_ptr<const Data>(evolved));
+      }
+    }
+  }
+  const Divide_and_conquer_counts counts = divide_and_conquer(driver, how.first, how.second);
   stats.merge_seconds = seconds_since(t0);
   copy_counts(stats, counts);
   stats.parts = counts.parts;
@@ -489,7 +606,12 @@ Computes the medial axis of a polygon in one shot: a `CGAL::Polygon_2` or
 The computation is the divide and conquer of the paper (section 6.4): the
 triangles of a constrained Delaunay triangulation are cut into connected
 parts whose axes are computed independently and merged along the diagonals
-between them.  When the package is linked with oneTBB
+between them.  Where the boundary is sampled so finely against the shape's
+width that a merge would cross dozens of cells (measured on a few
+triangles of four parts first, from 1,024 triangles on), the axis is
+computed by boundary evolution instead, all its steps done (see the user
+manual, "One shot: divide and conquer"); `statistics` then says so.  When
+the package is linked with oneTBB
 (`CGAL_LINKED_WITH_TBB`, the CMake target `CGAL::TBB_support`), the parts
 are computed in parallel, on the threads of the current `tbb::task_arena`
 (all hardware threads by default; run the call inside a

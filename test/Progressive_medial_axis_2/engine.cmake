@@ -6,8 +6,9 @@ pma_add_test_program(test_medial_axis_oracle)
 target_compile_definitions(test_medial_axis_oracle PRIVATE CGAL_PMA2_EVOLUTION_SLAB_VERTICES=200)
 add_test(NAME oracle_filtered COMMAND test_medial_axis_oracle --only regressions,random,holes,data,touching,union)
 # Degenerate input (integer grids, Hilbert, Koch, regular polygons, glyphs):
-# every exact tie decided, against the oracle.
-add_test(NAME oracle_degenerate COMMAND test_medial_axis_oracle --only degenerate)
+# every exact tie decided, against the oracle; and finely flattened glyphs,
+# whose default one-shot takes boundary evolution.
+add_test(NAME oracle_degenerate COMMAND test_medial_axis_oracle --only degenerate,fine)
 # The fallbacks of the exact stages from 128-bit to GMP rationals inside real
 # merges (the one-root and nested-root numbers redone in Gmpq where a result
 # overflows): no test shape overflows 128 bits, so in this build the 128-bit

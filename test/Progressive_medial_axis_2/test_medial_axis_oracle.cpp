@@ -4,7 +4,7 @@
 // axis at every step compared.
 //
 //   test_medial_axis_oracle [--quick] [--only SECTION,...] [--skip SHAPE]
-//       sections: regressions, random, holes, data, degenerate, touching, union
+//       sections: regressions, random, holes, data, degenerate, fine, touching, union
 //                           [--traits filtered|epick|exact] [--seed-base N]
 //                           [--driver region|boundary]
 //
@@ -544,6 +544,52 @@ void degenerate_tests(Checker<Traits>& checker, const Options& o)
   std::cout << "degenerate: " << shapes.size() << " shapes\n";
 }
 
+// Glyphs whose curves were flattened finely (data/glyphs_fine: 80 segments a
+// curve, 2 decimals): a merge of the divide and conquer crosses about 30
+// cells there, so the default one-shot (medial_axis_2()) computes the axis by
+// boundary evolution instead.  On two threads (the choice depends on them)
+// it must take that way, and give the oracle's axis; a boundary evolution
+// whose budget runs out must give up, and one whose budget suffices must give
+// the same axis.
+template <class Traits>
+void fine_tests(Checker<Traits>& checker, const Options&)
+{
+  namespace I = CGAL::Progressive_medial_axes::internal;
+  typedef typename Traits::Kernel Kernel;
+  std::size_t count = 0;
+  for(const std::string& f : list_wkt(std::string(PMA_TEST_DATA) + "/glyphs_fine")) {
+    const Rings rings = pma_tool::read_polygon_file<Point>(f);
+    const std::string what = f.substr(f.find_last_of('/') + 1);
+    CGAL::Progressive_medial_axis_statistics stats;
+    auto one_shot = [&] { return CGAL::medial_axis_2(rings, Traits(), CGAL::CHECK_INPUT, &stats); };
+    decltype(one_shot()) ma;
+#ifdef CGAL_LINKED_WITH_TBB
+    tbb::task_arena(2).execute([&] { ma = one_shot(); });
+#else
+    ma = one_shot();
+#endif
+    CHECK(stats.boundary_evolution_one_shots == 1,
+          what << ": the one-shot took the divide and conquer (" << stats.merges << " merges, "
+               << stats.switches + stats.vanishings << " events)");
+    checker.compare(ma, "one-shot", true, what, rings);
+
+    const auto r = I::rings_of<Kernel>(rings);
+    typename I::Medial_axis_engine<Traits>::Data starved, fed;
+    CGAL::Progressive_medial_axis_statistics s;
+    CHECK(!I::one_shot_by_boundary_evolution(r, Traits(), 100.0, starved, s),
+          what << ": boundary evolution went on past its budget");
+    const bool done = I::one_shot_by_boundary_evolution(r, Traits(), 1e12, fed, s);
+    CHECK(done, what << ": boundary evolution gave up within a budget of 1e12 events");
+    if(done)
+      checker.compare(I::Medial_axis_access::make<Kernel>(std::make_shared<const decltype(fed)>(std::move(fed))),
+                      "boundary evolution with a budget", true, what, rings);
+    ++count;
+    if(pma_test::failures() > 20) return;
+  }
+  CHECK(count > 0, "no shape in data/glyphs_fine");
+  std::cout << "fine: " << count << " shapes\n";
+}
+
 // A rectangle of w x h unit cells with holes that touch the shell or each other
 // with a vertex inside an edge (T's): in a cell, a triangle whose vertex lies
 // at the middle of the cell's bottom side (on the shell, or on the top edge of
@@ -1032,6 +1078,7 @@ int run_all(const Options& o)
   if(wanted("holes")) hole_tests(checker, o);
   if(wanted("data")) data_tests(checker, o);
   if(wanted("degenerate")) degenerate_tests(checker, o);
+  if(wanted("fine")) fine_tests(checker, o);
   if(wanted("touching")) touching_tests(checker, o);
   if(wanted("union")) union_tests(checker, o);
 #ifdef CGAL_PMA2_SMALL_RATIONAL_TEST_BITS

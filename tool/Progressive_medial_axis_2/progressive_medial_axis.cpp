@@ -318,6 +318,7 @@ void add_statistics(CGAL::Progressive_medial_axis_statistics& s, const CGAL::Pro
   s.cuts += t.cuts;
   s.splits += t.splits;
   s.recomputed_steps += t.recomputed_steps;
+  s.boundary_evolution_one_shots += t.boundary_evolution_one_shots;
 }
 
 // One polygon of the input, its axis and what is computed from it.
@@ -954,6 +955,7 @@ int run(const Options& o)
       std::printf("dc_parts %zu\ntime_parts_sum %.6f\ntime_parts_max %.6f\ntime_parts_join %.6f\ntime_work %.6f\n"
                   "time_span %.6f\n",
                   s.parts, s.parts_seconds_sum, s.parts_seconds_max, s.join_seconds, work, read_seconds + span);
+      std::printf("oneshot_boundary_evolution %zu\n", s.boundary_evolution_one_shots);
     }
     if(!o.union_with.empty())
       std::printf("time_union_merge %.6f\ntime_union_join %.6f\nunion_shared_edges %zu\nunion_chains %zu\n",

@@ -53,7 +53,8 @@ struct Progressive_medial_axis_statistics {
   std::size_t parts = 0;           ///< one shot: parts of the divide and conquer
   double parts_seconds_sum = 0;    ///< one shot: the tasks of all parts (built independently), summed
   double parts_seconds_max = 0;    ///< one shot: the longest task of a part
-  double join_seconds = 0;         ///< one shot: joining the parts and the merges between them (sequential)
+  double join_seconds = 0;         ///< one shot: joining the parts and the merges between them (sequential); with boundary evolution, also its steps
+  std::size_t boundary_evolution_one_shots = 0; ///< one shot: 1 where boundary evolution computed the axis (finely sampled boundaries, see `medial_axis_2()`), else 0
 };
 
 /*!

@@ -79,6 +79,7 @@
 #include <atomic>
 #include <chrono>
 #include <cstddef>
+#include <limits>
 #include <vector>
 #include <mutex>
 #include <thread>
@@ -241,11 +242,9 @@ public:
     Divide_and_conquer_counts counts;
     if(T == 0)
       return counts;
-    spanning_tree();
-    cut(parts == 0 ? 1 : parts);
+    if(!prepared_ || prepared_parts_ != parts)
+      prepare(parts);
     const std::size_t P = roots_.size();
-    sides_.assign(std::size_t(T), std::array<int, 3>{{NO_INDEX, NO_INDEX, NO_INDEX}});
-    added_.assign(std::size_t(T), 0);
 
     // 1. the parts.  On one thread they are built one after the other in
     // the result's structure.  Otherwise part 0 is built there and each
@@ -379,13 +378,57 @@ public:
 
   std::size_t number_of_parts() const { return roots_.size(); }
 
+  /// The mean number of events (switches and vanishings) of a merge where
+  /// the axis grows one triangle at a time, as in a part: the first `limit`
+  /// triangles of `seeds` parts spread over the tree (of a cut into `parts`
+  /// parts, which run() then uses), built in structures of their own and
+  /// dropped.  Where the triangles are long and thin against the boundary
+  /// edges around them (curves sampled finely against the width of the
+  /// shape), every merge crosses the cells of all the short edges near its
+  /// diagonal: 27 to 40 events a merge in the first 48 triangles of four
+  /// parts of some glyphs whose curves were flattened into 32 or 80 segments,
+  /// against 4 to 13 on the country outlines, integer grids, Koch
+  /// snowflakes and regular polygons of the benchmarks (33 on regular
+  /// polygons with regular holes; RESULTS.md, "Finely sampled curves",
+  /// nineteenth session).  One part alone is not enough:
+  /// the first part of c1m_USA_3 took 30 events a merge.
+  double probe(std::size_t parts, std::size_t seeds, std::size_t limit)
+  {
+    if(triangles_.empty())
+      return 0;
+    prepare(parts);
+    Divide_and_conquer_counts counts;
+    const std::size_t P = roots_.size(), S = (std::min)(seeds, P);
+    for(std::size_t i = 0; i < S; ++i) {
+      Hds hds;
+      Engine engine(hds, engine_.points(), engine_.traits());
+      build_part(engine, int(i * P / S), counts, limit);
+    }
+    std::fill(added_.begin(), added_.end(), char(0));
+    return counts.merges == 0 ? 0 : double(counts.switches + counts.vanishings) / double(counts.merges);
+  }
+
 private:
+  // The spanning tree, its cut into about `parts` parts, and the arrays of
+  // the triangles' sides.
+  void prepare(std::size_t parts)
+  {
+    const std::size_t T = triangles_.size();
+    spanning_tree();
+    cut(parts == 0 ? 1 : parts);
+    sides_.assign(T, std::array<int, 3>{{NO_INDEX, NO_INDEX, NO_INDEX}});
+    added_.assign(T, 0);
+    prepared_ = true;
+    prepared_parts_ = parts;
+  }
+
   // Breadth-first spanning tree of the dual graph from triangle 0: the
   // parent of each triangle, the order, and the diagonals off the tree.
   void spanning_tree()
   {
     const int T = int(triangles_.size());
     parent_.assign(std::size_t(T), NO_INDEX);
+    off_tree_.clear();
     order_.clear();
     order_.reserve(std::size_t(T));
     std::vector<char> seen(std::size_t(T), 0);
@@ -466,7 +509,9 @@ private:
     counts.add(engine.merge(h, sides_[std::size_t(t)][std::size_t(e)], counts));
   }
 
-  void build_part(Engine& engine, int p, Divide_and_conquer_counts& counts)
+  // Builds part p, or its first `limit` triangles.
+  void build_part(Engine& engine, int p, Divide_and_conquer_counts& counts,
+                  std::size_t limit = (std::numeric_limits<std::size_t>::max)())
   {
     // the part's triangles in the global breadth-first order: a parent
     // comes before its children
@@ -479,6 +524,7 @@ private:
       for(int e = 0; e < 3; ++e) {
         const int u = triangles_[std::size_t(t)].nbr[e];
         if(u < 0 || parent_[std::size_t(u)] != t || part_[std::size_t(u)] != p) continue;
+        if(queue.size() >= limit) return;
         add(engine, u, false, counts);
         added_[std::size_t(u)] = 1;
         queue.push_back(u);
@@ -505,6 +551,8 @@ private:
   std::vector<std::array<int, 2> > off_tree_;
   std::vector<std::array<int, 3> > sides_;
   std::vector<char> added_;   // written by the part of each triangle only
+  bool prepared_ = false;   // whether prepare() made the cut into `prepared_parts_` parts
+  std::size_t prepared_parts_ = 0;
 };
 
 /// The number of parts of a one-shot of `triangles` triangles: parts of
@@ -531,6 +579,33 @@ inline std::size_t default_parts(std::size_t triangles)
   return (std::max)(std::size_t(1), (std::min)(by_size, triangles / 32));
 }
 
+/// Runs `driver` into its engine's structure (see below), gathering the
+/// filter counters of the other threads into the caller's.
+template <class Traits>
+Divide_and_conquer_counts divide_and_conquer(Divide_and_conquer<Traits>& driver, std::size_t parts, Parts_mode mode)
+{
+  Thread_counters<Traits> counters;
+  std::mutex mutex;
+  const std::thread::id caller = std::this_thread::get_id();
+  const Divide_and_conquer_counts counts =
+    driver.run(parts, mode, [&](const auto& task) { counters.run_counted(caller, mutex, task); });
+  if constexpr(!std::is_empty<Thread_counters<Traits> >::value)
+    counters.gather();
+  return counts;
+}
+
+/// How the parts of a one-shot of traits `Traits` with `parts` parts (0:
+/// the default) run, and how many there are for `triangles` triangles.
+template <class Traits>
+std::pair<std::size_t, Parts_mode> one_shot_parts(std::size_t parts, std::size_t triangles)
+{
+  const bool doubles = std::is_floating_point<typename Traits::Kernel::FT>::value;
+  const Parts_mode mode = !doubles ? PARTS_SEQUENTIAL : (parts != 0 ? PARTS_PARALLEL : PARTS_PARALLEL_IF_WORTH_IT);
+  if(parts == 0)
+    parts = doubles ? default_parts(triangles) : 1;
+  return std::make_pair(parts, mode);
+}
+
 /// The axis of the polygon of `triangles` (its constrained Delaunay
 /// triangulation) by divide and conquer, into the engine's structure, in
 /// `parts` parts, or with 0 as many as default_parts() chooses.
@@ -546,19 +621,9 @@ template <class Traits>
 Divide_and_conquer_counts divide_and_conquer(Medial_axis_engine<Traits>& engine, std::vector<Triangle> triangles,
                                              std::size_t parts = 0)
 {
-  const bool doubles = std::is_floating_point<typename Traits::Kernel::FT>::value;
-  const Parts_mode mode = !doubles ? PARTS_SEQUENTIAL : (parts != 0 ? PARTS_PARALLEL : PARTS_PARALLEL_IF_WORTH_IT);
-  if(parts == 0)
-    parts = doubles ? default_parts(triangles.size()) : 1;
+  const auto how = one_shot_parts<Traits>(parts, triangles.size());
   Divide_and_conquer<Traits> driver(engine, std::move(triangles));
-  Thread_counters<Traits> counters;
-  std::mutex mutex;
-  const std::thread::id caller = std::this_thread::get_id();
-  const Divide_and_conquer_counts counts =
-    driver.run(parts, mode, [&](const auto& task) { counters.run_counted(caller, mutex, task); });
-  if constexpr(!std::is_empty<Thread_counters<Traits> >::value)
-    counters.gather();
-  return counts;
+  return divide_and_conquer(driver, how.first, how.second);
 }
 
 } // namespace internal
