@@ -460,8 +460,11 @@ bool one_shot_by_boundary_evolution(const std::vector<std::vector<typename Trait
   const auto t2 = std::chrono::steady_clock::now();
   Boundary_evolution_counts steps;
   const double start_events = double(start.switches + start.vanishings);
+  // (a step whose cut is not local computes its axis again in one shot,
+  // whose events the step does not report: charged as 4 a point)
+  const double recomputed_events = 4 * double(data.points.size());
   for(std::size_t k = 1; k <= driver.number_of_steps(); ++k) {
-    if(start_events + double(steps.events()) > budget)
+    if(start_events + double(steps.events()) + recomputed_events * double(driver.recomputed_steps()) > budget)
       return false;
     driver.step(k, steps);
   }
@@ -472,7 +475,6 @@ bool one_shot_by_boundary_evolution(const std::vector<std::vector<typename Trait
   Divide_and_conquer_counts all = start;
   all.add(steps.merges);
   copy_counts(stats, all);
-  stats.triangles = driver.number_of_triangles();
   stats.evolution_seconds = seconds(t0, t1);
   stats.cuts = steps.cuts;
   stats.splits = steps.splits;
@@ -555,7 +557,6 @@ one_shot_medial_axis(const std::vector<std::vector<typename Traits::Kernel::Poin
   stats.triangulation_seconds = stats.overlapped_seconds + seconds_since(t0);
 
   t0 = std::chrono::steady_clock::now();
-  data->hds.reserve(2 * data->points.size() + 16, 4 * data->points.size() + 16);
   Engine engine(*data, traits);
   const std::size_t T = triangles.size();
   const auto how = one_shot_parts<Traits>(parts, T);
@@ -582,6 +583,7 @@ one_shot_medial_axis(const std::vector<std::vector<typename Traits::Kernel::Poin
       }
     }
   }
+  data->hds.reserve(2 * data->points.size() + 16, 4 * data->points.size() + 16);
   const Divide_and_conquer_counts counts = divide_and_conquer(driver, how.first, how.second);
   stats.merge_seconds = seconds_since(t0);
   copy_counts(stats, counts);

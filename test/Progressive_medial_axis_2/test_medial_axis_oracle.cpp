@@ -568,7 +568,8 @@ void fine_tests(Checker<Traits>& checker, const Options&)
 #else
     ma = one_shot();
 #endif
-    CHECK(stats.boundary_evolution_one_shots == 1,
+    // (exact kernels build one part, and are not probed)
+    CHECK(!std::is_floating_point<typename Kernel::FT>::value || stats.boundary_evolution_one_shots == 1,
           what << ": the one-shot took the divide and conquer (" << stats.merges << " merges, "
                << stats.switches + stats.vanishings << " events)");
     checker.compare(ma, "one-shot", true, what, rings);
