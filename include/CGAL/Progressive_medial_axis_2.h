@@ -394,14 +394,17 @@ private:
 namespace Progressive_medial_axes {
 namespace internal {
 
-/// A one-shot of this many triangles or more, cut into `probe_seeds` parts
-/// or more, first measures what its merges cost
-/// (Divide_and_conquer::probe(): the first triangles of `probe_seeds`
-/// parts, built and dropped: a sixteenth of all, but at least
+/// A one-shot cut into `probe_seeds` parts or more (from 128 triangles on)
+/// first measures what its merges cost (Divide_and_conquer::probe(): the
+/// first triangles of `probe_seeds` parts, a sixteenth of all, but at least
 /// `min_probe_triangles_per_part` and at most `max_probe_triangles_per_part`
 /// a part; fewer were blind to glyphs of 1,000 to 2,000 triangles, where a
-/// merge's cost grows with the part for the first few dozen triangles)...
-constexpr std::size_t min_probe_triangles = 1024;
+/// merge's cost grows with the part for the first few dozen triangles).
+/// The divide and conquer goes on from the triangles probed, so the probe
+/// costs nothing where it keeps the divide and conquer; when it dropped them,
+/// the probe was kept to 1,024 triangles or more, which left glyphs of a few
+/// hundred triangles 3 times slower than needed (RESULTS.md, "Small
+/// polygons probed too", twentieth session)...
 constexpr std::size_t probe_seeds = 4;
 constexpr std::size_t min_probe_triangles_per_part = 32;
 constexpr std::size_t max_probe_triangles_per_part = 48;
@@ -419,8 +422,11 @@ constexpr std::size_t max_probe_triangles_per_part = 48;
 /// in parallel, boundary evolution puts vertices back one at a time, and on
 /// cocircular vertices (a regular polygon) its steps cross all the cells
 /// around the centre (RESULTS.md, "Finely sampled curves", nineteenth
-/// session).
-constexpr double boundary_evolution_events_per_merge = 20;
+/// session).  So 20 on two threads; on one thread 18: there, of 164 probed
+/// shapes, those measuring 18 or more took 0.04 to 0.96 times as long by
+/// boundary evolution, some from 12 on up to 1.33 times (RESULTS.md, "Small
+/// polygons probed too", twentieth session).
+constexpr double boundary_evolution_events_per_merge = 18;
 constexpr double boundary_evolution_events_per_thread = 10;
 
 // Counts the work of boundary evolution's steps.
@@ -492,7 +498,8 @@ template <class Traits>
 Medial_axis_2<typename Traits::Kernel>
 one_shot_medial_axis(const std::vector<std::vector<typename Traits::Kernel::Point_2> >& rings, const Traits& traits,
                      Medial_axis_input_check check, Progressive_medial_axis_statistics* statistics,
-                     std::size_t parts = 0)   // 0: default_parts()
+                     std::size_t parts = 0,         // 0: default_parts()
+                     std::size_t probe_limit = 0)   // (tests) with `parts`: probe this many triangles a part first
 {
   typedef typename Traits::Kernel Kernel;
   typedef Medial_axis_engine<Traits> Engine;
@@ -561,15 +568,13 @@ one_shot_medial_axis(const std::vector<std::vector<typename Traits::Kernel::Poin
   const std::size_t T = triangles.size();
   const auto how = one_shot_parts<Traits>(parts, T);
   Divide_and_conquer<Traits> driver(engine, std::move(triangles));
-  if(parts == 0 && T >= min_probe_triangles && how.first >= probe_seeds) {
-    // (the probe's decisions are counted in the filter statistics)
+  if(parts == 0 && how.first >= probe_seeds) {
+    // (the probe's decisions are counted in the filter statistics, its
+    // merges in the divide and conquer's where that is kept)
     const std::size_t limit = (std::min)(max_probe_triangles_per_part,
                                          (std::max)(min_probe_triangles_per_part, T / (16 * probe_seeds)));
     const double events = driver.probe(how.first, probe_seeds, limit);
-    double threads = 1;
-#ifdef CGAL_PMA2_USE_TBB
-    threads = double((std::max)(1, tbb::this_task_arena::max_concurrency()));
-#endif
+    const double threads = double(arena_threads());
     if(events >= (std::max)(boundary_evolution_events_per_merge, boundary_evolution_events_per_thread * threads)) {
       // boundary evolution, unless it does more work than the divide and
       // conquer would on these threads (at the probe's rate): then the
@@ -583,6 +588,8 @@ one_shot_medial_axis(const std::vector<std::vector<typename Traits::Kernel::Poin
       }
     }
   }
+  if(parts != 0 && probe_limit != 0)   // (the divide and conquer goes on from the triangles probed)
+    driver.probe(how.first, probe_seeds, probe_limit);
   data->hds.reserve(2 * data->points.size() + 16, 4 * data->points.size() + 16);
   const Divide_and_conquer_counts counts = divide_and_conquer(driver, how.first, how.second);
   stats.merge_seconds = seconds_since(t0);
@@ -610,7 +617,7 @@ triangles of a constrained Delaunay triangulation are cut into connected
 parts whose axes are computed independently and merged along the diagonals
 between them.  Where the boundary is sampled so finely against the shape's
 width that a merge would cross dozens of cells (measured on a few
-triangles of four parts first, from 1,024 triangles on), the axis is
+triangles of four parts first, from 128 triangles on), the axis is
 computed by boundary evolution instead, all its steps done (see the user
 manual, "One shot: divide and conquer"); `statistics` then says so.  When
 the package is linked with oneTBB

@@ -33,6 +33,10 @@
 //      in, in a half-edge structure that the part owns (on one thread, all
 //      parts in the result's structure, one after the other); the part's
 //      vertices are then resolved (their disks constructed);
+//      the first triangles of some parts may have been built by probe(),
+//      each part in a structure of its own: that structure is appended to
+//      the one the part is built in (the half-edges of its sides shifted),
+//      and the part goes on from where the probe stopped;
 //   2. each part's structure is appended to the result's structure as soon
 //      as it and the parts before it are built, by the thread that built
 //      the last of them, while the other threads go on building parts (one
@@ -80,6 +84,7 @@
 #include <chrono>
 #include <cstddef>
 #include <limits>
+#include <memory>
 #include <vector>
 #include <mutex>
 #include <thread>
@@ -218,6 +223,16 @@ inline bool tbb_running()
 #endif
 }
 
+/// The threads of the current task arena (1 without oneTBB).
+inline std::size_t arena_threads()
+{
+#ifdef CGAL_PMA2_USE_TBB
+  return std::size_t((std::max)(1, tbb::this_task_arena::max_concurrency()));
+#else
+  return 1;
+#endif
+}
+
 template <class Traits>
 class Divide_and_conquer
 {
@@ -297,8 +312,11 @@ public:
         const bool own = p > 0 && !one_thread;
         Hds& hds = own ? structures[p] : engine_.hds();
         if(own) hds.reserve(2 * size_[p] + 16, 4 * size_[p] + 16);
+        Part_progress progress;
+        if(p < probed_.size() && probed_[p])
+          progress = take_probed(p, hds, part_counts[p]);
         Engine engine(hds, engine_.points(), engine_.traits());
-        build_part(engine, int(p), part_counts[p]);
+        build_part(engine, int(p), part_counts[p], progress);
         engine.resolve_pending();
       });
       if(!one_thread)
@@ -362,6 +380,7 @@ public:
     free_vector(sides_);
     free_vector(added_);
     free_vector(off_tree_);
+    probed_.clear();
 
     // 3. the merges along the diagonals between parts (all parts are in
     // the result's structure now)
@@ -391,7 +410,10 @@ public:
   /// snowflakes and regular polygons of the benchmarks (33 on regular
   /// polygons with regular holes; RESULTS.md, "Finely sampled curves",
   /// nineteenth session).  One part alone is not enough:
-  /// the first part of c1m_USA_3 took 30 events a merge.
+  /// the first part of c1m_USA_3 took 30 events a merge.  The triangles
+  /// built are kept: run() goes on from them (their structures appended to
+  /// those the parts are built in), so a probe that keeps the divide and
+  /// conquer costs nothing but that append.
   double probe(std::size_t parts, std::size_t seeds, std::size_t limit)
   {
     if(triangles_.empty())
@@ -399,12 +421,15 @@ public:
     prepare(parts);
     Divide_and_conquer_counts counts;
     const std::size_t P = roots_.size(), S = (std::min)(seeds, P);
+    probed_.resize(P);
     for(std::size_t i = 0; i < S; ++i) {
-      Hds hds;
-      Engine engine(hds, engine_.points(), engine_.traits());
-      build_part(engine, int(i * P / S), counts, limit);
+      const std::size_t p = i * P / S;
+      auto probed = std::make_unique<Probed_part>();
+      Engine engine(probed->hds, engine_.points(), engine_.traits());
+      build_part(engine, int(p), probed->counts, probed->progress, limit);
+      counts.add(probed->counts);
+      probed_[p] = std::move(probed);
     }
-    std::fill(added_.begin(), added_.end(), char(0));
     return counts.merges == 0 ? 0 : double(counts.switches + counts.vanishings) / double(counts.merges);
   }
 
@@ -418,6 +443,7 @@ private:
     cut(parts == 0 ? 1 : parts);
     sides_.assign(T, std::array<int, 3>{{NO_INDEX, NO_INDEX, NO_INDEX}});
     added_.assign(T, 0);
+    probed_.clear();
     prepared_ = true;
     prepared_parts_ = parts;
   }
@@ -509,22 +535,58 @@ private:
     counts.add(engine.merge(h, sides_[std::size_t(t)][std::size_t(e)], counts));
   }
 
-  // Builds part p, or its first `limit` triangles.
-  void build_part(Engine& engine, int p, Divide_and_conquer_counts& counts,
+  // Where the building of a part stands: its triangles added (in the
+  // global breadth-first order: a parent comes before its children), and
+  // the next neighbour to look at (side `side` of triangle queue[next]).
+  struct Part_progress {
+    std::vector<int> queue;
+    std::size_t next = 0;
+    int side = 0;
+  };
+
+  // The first triangles of a part, built by probe() in a structure of
+  // their own.
+  struct Probed_part {
+    Hds hds;
+    Part_progress progress;
+    Divide_and_conquer_counts counts;
+  };
+
+  // Moves the triangles that probe() built of part p to the end of `hds`
+  // (the half-edges of their sides shift with them) and their counts to
+  // `counts`; returns where the part's building stands.
+  Part_progress take_probed(std::size_t p, Hds& hds, Divide_and_conquer_counts& counts)
+  {
+    Probed_part& probed = *probed_[p];
+    counts.add(probed.counts);
+    const int shift = hds.append(probed.hds).halfedge;
+    if(shift != 0)
+      for(int t : probed.progress.queue)
+        for(int& h : sides_[std::size_t(t)])
+          if(h >= 0) h += shift;
+    Part_progress progress = std::move(probed.progress);
+    probed_[p].reset();
+    return progress;
+  }
+
+  // Builds part p from where `progress` stands, until it is whole or holds
+  // `limit` triangles.
+  void build_part(Engine& engine, int p, Divide_and_conquer_counts& counts, Part_progress& progress,
                   std::size_t limit = (std::numeric_limits<std::size_t>::max)())
   {
-    // the part's triangles in the global breadth-first order: a parent
-    // comes before its children
-    const int root = roots_[std::size_t(p)];
-    std::vector<int> queue{root};
-    add(engine, root, true, counts);
-    added_[std::size_t(root)] = 1;
-    for(std::size_t i = 0; i < queue.size(); ++i) {
-      const int t = queue[i];
-      for(int e = 0; e < 3; ++e) {
-        const int u = triangles_[std::size_t(t)].nbr[e];
+    std::vector<int>& queue = progress.queue;
+    if(queue.empty()) {
+      const int root = roots_[std::size_t(p)];
+      queue.push_back(root);
+      add(engine, root, true, counts);
+      added_[std::size_t(root)] = 1;
+    }
+    for(; progress.next < queue.size(); ++progress.next, progress.side = 0) {
+      const int t = queue[progress.next];
+      for(; progress.side < 3; ++progress.side) {
+        const int u = triangles_[std::size_t(t)].nbr[progress.side];
         if(u < 0 || parent_[std::size_t(u)] != t || part_[std::size_t(u)] != p) continue;
-        if(queue.size() >= limit) return;
+        if(queue.size() >= limit) return;   // (goes on from this side)
         add(engine, u, false, counts);
         added_[std::size_t(u)] = 1;
         queue.push_back(u);
@@ -551,6 +613,7 @@ private:
   std::vector<std::array<int, 2> > off_tree_;
   std::vector<std::array<int, 3> > sides_;
   std::vector<char> added_;   // written by the part of each triangle only
+  std::vector<std::unique_ptr<Probed_part> > probed_;   // by part: what probe() built of it
   bool prepared_ = false;   // whether prepare() made the cut into `prepared_parts_` parts
   std::size_t prepared_parts_ = 0;
 };
@@ -571,10 +634,7 @@ private:
 /// which is why the parts of smaller polygons stay larger.
 inline std::size_t default_parts(std::size_t triangles)
 {
-  std::size_t threads = 1;
-#ifdef CGAL_PMA2_USE_TBB
-  threads = std::size_t((std::max)(1, tbb::this_task_arena::max_concurrency()));
-#endif
+  const std::size_t threads = arena_threads();
   const std::size_t by_size = (std::min)((std::max)(triangles / 4096, 4 * threads), 16 * threads);
   return (std::max)(std::size_t(1), (std::min)(by_size, triangles / 32));
 }
