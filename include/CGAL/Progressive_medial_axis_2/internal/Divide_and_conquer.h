@@ -400,10 +400,10 @@ public:
   /// The mean number of events (switches and vanishings) of a merge where
   /// the axis grows one triangle at a time, as in a part: the first `limit`
   /// triangles of `seeds` parts spread over the tree (of a cut into `parts`
-  /// parts, which run() then uses), built in structures of their own and
-  /// dropped.  Where the triangles are long and thin against the boundary
-  /// edges around them (curves sampled finely against the width of the
-  /// shape), every merge crosses the cells of all the short edges near its
+  /// parts, which run() then uses), built in structures of their own.
+  /// Where the triangles are long and thin against the boundary edges
+  /// around them (curves sampled finely against the width of the shape),
+  /// every merge crosses the cells of all the short edges near its
   /// diagonal: 27 to 40 events a merge in the first 48 triangles of four
   /// parts of some glyphs whose curves were flattened into 32 or 80 segments,
   /// against 4 to 13 on the country outlines, integer grids, Koch
@@ -411,9 +411,9 @@ public:
   /// polygons with regular holes; RESULTS.md, "Finely sampled curves",
   /// nineteenth session).  One part alone is not enough:
   /// the first part of c1m_USA_3 took 30 events a merge.  The triangles
-  /// built are kept: run() goes on from them (their structures appended to
-  /// those the parts are built in), so a probe that keeps the divide and
-  /// conquer costs nothing but that append.
+  /// built are kept: run() goes on from them (take_probed() appends their
+  /// structures to those the parts are built in), so a probe that keeps the
+  /// divide and conquer costs nothing but that append.
   double probe(std::size_t parts, std::size_t seeds, std::size_t limit)
   {
     if(triangles_.empty())
