@@ -11,6 +11,9 @@
 
 #include <sys/wait.h>
 #include <unistd.h>
+#ifdef __GLIBC__
+#include <gnu/libc-version.h>
+#endif
 
 #include <algorithm>
 #include <array>
@@ -586,6 +589,68 @@ void repair(const std::string& data)
 
 } // namespace
 
+// The value of `key` in --stats output, or "" if absent.
+std::string stats_value(const std::string& out, const std::string& key)
+{
+  std::istringstream s(out);
+  std::string k, v;
+  while(s >> k >> v)
+    if(k == key) return v;
+  return "";
+}
+
+// A large input (over 512 KB) runs again with glibc's malloc on transparent
+// huge pages where the kernel gives them on request: the axis is the
+// oracle's and the same as without; GLIBC_TUNABLES that names the setting
+// turns it off, and other tunables the user set are kept.
+void huge_pages(const std::string& data)
+{
+  const std::string file = tmp + "/large.wkt";
+  {
+    std::ofstream f(file);
+    f.precision(17);
+    const int n = 16000;
+    const double pi = 3.14159265358979323846;
+    f << "POLYGON ((";
+    for(int i = 0; i <= n; ++i) {
+      const double t = 2 * pi * (i % n) / n, r = 1 + 0.25 * std::sin(7 * t) + 0.05 * std::sin(131 * t);
+      f << (i ? ", " : "") << r * std::cos(t) << " " << r * std::sin(t);
+    }
+    f << "))\n";
+  }
+  CHECK(slurp(file).size() > 512 * 1024, "the large input is too small: " << slurp(file).size() << " bytes");
+  pairs_against_oracle(file, {-1});
+  const Result on = run(tool + " --stats --pairs " + file);
+  const Result off = run("GLIBC_TUNABLES=glibc.malloc.hugetlb=0 " + tool + " --stats --pairs " + file);
+  const Result kept = run("GLIBC_TUNABLES=glibc.malloc.trim_threshold=268435456 " + tool + " --stats --pairs " + file);
+  for(const Result* r : {&on, &off, &kept}) CHECK(r->status == 0, "huge pages: exit status " << r->status << ": " << r->err);
+  auto pairs = [](const std::string& out) { return out.substr(0, out.find("input_vertices ")); };
+  CHECK(!pairs(on.out).empty() && pairs(on.out) == pairs(off.out) && pairs(on.out) == pairs(kept.out),
+        "huge pages: --pairs differ with and without");
+  CHECK(stats_value(off.out, "huge_pages") == "0", "GLIBC_TUNABLES=glibc.malloc.hugetlb=0: huge_pages " << stats_value(off.out, "huge_pages"));
+  // where the kernel gives huge pages on request (THP "madvise") and glibc
+  // has the setting (2.35), a large input gets them, unless the tool is
+  // built with a sanitizer (its own allocator)
+  const std::string thp = slurp("/sys/kernel/mm/transparent_hugepage/enabled");
+  const char* preload = std::getenv("LD_PRELOAD");
+  int major = 0, minor = 0;
+#ifdef __GLIBC__
+  std::sscanf(gnu_get_libc_version(), "%d.%d", &major, &minor);
+#endif
+  const bool expected = (major > 2 || (major == 2 && minor >= 35)) && thp.find("[madvise]") != std::string::npos && tool.find("_asan") == std::string::npos &&
+                        !(preload && *preload) && std::getenv("GLIBC_TUNABLES") == nullptr;
+  const std::string v = stats_value(on.out, "huge_pages"), w = stats_value(kept.out, "huge_pages");
+  CHECK(v == "0" || v == "1", "huge_pages missing from --stats");
+  if(expected) {
+    CHECK(v == "1", "a large input on a THP-madvise kernel: huge_pages " << v);
+    CHECK(w == "1", "with another tunable set: huge_pages " << w);
+  }
+  // a small input never
+  const Result small = run(tool + " --stats " + data + "/syn_comb50.wkt");
+  CHECK(small.status == 0 && stats_value(small.out, "huge_pages") == "0",
+        "a small input: huge_pages " << stats_value(small.out, "huge_pages"));
+}
+
 int main(int argc, char** argv)
 {
   if(argc != 4) {
@@ -620,6 +685,7 @@ int main(int argc, char** argv)
   several_polygons(data);
   union_of_two(data);
   repair(data);
+  huge_pages(data);
 
   std::system((std::string("rm -rf ") + tmp).c_str());
   return pma_test::report("test_tool");
