@@ -46,13 +46,17 @@
 // equals 2P and the division goes on with that.
 //
 // The rational type.  The coefficients are Small_rational (128 bits, on the
-// stack: Small_rational.h) or Gmpq: the types Small_nested_root_number and
+// stack: Small_rational.h) or Gmp_rational (GMP's mpq_t from a pool of the
+// thread: Gmp_rational.h): the types Small_nested_root_number and
 // Nested_root_number.  A Small_rational operation whose result does not fit
-// throws Small_rational_overflow, and the caller evaluates again in Gmpq (as
-// the one-root stage does).  The terms of a number live in a small vector
-// with room for four on the stack: the exact ties of degenerate input (the
-// integer circles of font outlines) spent a third of their time in malloc
-// and GMP for numbers of a few terms.
+// throws Small_rational_overflow, and the caller evaluates again in
+// Gmp_rational (as the one-root stage does).  The terms of a number live in
+// a small vector with room for four on the stack: the exact ties of
+// degenerate input (the integer circles of font outlines) spent a third of
+// their time in malloc and GMP for numbers of a few terms.  Gmp_rational
+// rather than CGAL::Gmpq (a reference-counted handle allocated for every
+// temporary) took 3% to 7% off shapes with many such ties in one thread
+// (RESULTS.md, twenty-first session).
 
 #ifndef CGAL_PROGRESSIVE_MEDIAL_AXIS_2_INTERNAL_NESTED_ROOT_NUMBER_H
 #define CGAL_PROGRESSIVE_MEDIAL_AXIS_2_INTERNAL_NESTED_ROOT_NUMBER_H
@@ -110,7 +114,7 @@ inline int highest_root(Root_mask m)
 }
 
 /// The roots of one exact evaluation, with coefficients of the rational
-/// type Rational (Gmpq or Small_rational).  Creating a context makes it the
+/// type Rational (Gmp_rational or Small_rational).  Creating a context makes it the
 /// current one of the thread (for its Rational) until it is destroyed; nested-root
 /// numbers are valid only while their context lives.
 template <class Rational>
@@ -520,8 +524,8 @@ private:
   Root_polynomial p_;
 };
 
-typedef Basic_nested_root_context<Gmpq> Nested_root_context;
-typedef Basic_nested_root_number<Gmpq> Nested_root_number;
+typedef Basic_nested_root_context<Gmp_rational> Nested_root_context;
+typedef Basic_nested_root_number<Gmp_rational> Nested_root_number;
 typedef Basic_nested_root_context<Small_rational> Small_nested_root_context;
 typedef Basic_nested_root_number<Small_rational> Small_nested_root_number;
 
