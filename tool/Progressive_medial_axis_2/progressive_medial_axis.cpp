@@ -282,8 +282,8 @@ constexpr std::uintmax_t min_huge_pages_input_bytes = 512 << 10;
 // and most distributions).  A large one-shot writes its structures once,
 // front to back: with 4 KB pages, one page fault per page took 10% to 30%
 // of the run on a 2-core VM, and 2 MB pages took 14% to 22% off the whole
-// process on real outlines and 28% on a plate of 100,000 holes, for 10% to
-// 20% more peak memory (RESULTS.md, "Huge pages for large inputs",
+// process on real outlines and 27% on a plate of 100,000 holes, for 5% to
+// 35% more peak memory (RESULTS.md, "Huge pages for large inputs",
 // twenty-first session).  glibc reads GLIBC_TUNABLES only when a process
 // starts, and offers no call to set this one later, hence exec; glibc
 // older than 2.35 ignores the setting, so it is not tried there.  Nothing
