@@ -35,6 +35,7 @@
 #ifdef __GLIBC__
 #include <gnu/libc-version.h>
 #include <malloc.h>
+#include <sys/auxv.h>
 #endif
 
 #include <chrono>
@@ -261,14 +262,51 @@ std::ofstream open_out(const std::string& path)
   return f;
 }
 
-// Whether glibc's malloc was told to back its heaps with transparent huge
-// pages (GLIBC_TUNABLES glibc.malloc.hugetlb=1, by use_huge_pages() below
-// or by the user); `huge_pages` in --stats.
-bool heap_on_huge_pages()
+// Whether glibc's malloc can back its heaps with transparent huge pages in
+// this process: glibc 2.35 or later, its malloc in use (no LD_PRELOAD, which
+// valgrind, heaptrack and other allocators use; not a sanitized build), not
+// in secure mode (glibc drops the tunable there), and a kernel that gives
+// such pages on request (THP "madvise", the default of Debian and most
+// distributions).
+bool huge_page_heap_possible()
+{
+#if defined(__GLIBC__) && defined(__linux__) && !defined(__SANITIZE_ADDRESS__) && !defined(__SANITIZE_THREAD__)
+#if defined(__has_feature)
+#if __has_feature(address_sanitizer) || __has_feature(thread_sanitizer) || __has_feature(memory_sanitizer)
+  return false;
+#endif
+#endif
+  const char* preload = std::getenv("LD_PRELOAD");
+  if((preload && *preload) || getauxval(AT_SECURE)) return false;
+  int major = 0, minor = 0;
+  if(std::sscanf(gnu_get_libc_version(), "%d.%d", &major, &minor) != 2 || major < 2 || (major == 2 && minor < 35))
+    return false;
+  std::string mode;
+  {
+    std::ifstream thp("/sys/kernel/mm/transparent_hugepage/enabled");
+    if(!std::getline(thp, mode)) return false;
+  }
+  return mode.find("[madvise]") != std::string::npos;
+#else
+  return false;
+#endif
+}
+
+// The value of the last glibc.malloc.hugetlb in GLIBC_TUNABLES ("" if none).
+std::string hugetlb_tunable()
 {
   const char* tunables = std::getenv("GLIBC_TUNABLES");
-  return tunables && std::string(tunables).find("glibc.malloc.hugetlb=1") != std::string::npos;
+  const std::string t = tunables ? tunables : "", name = "glibc.malloc.hugetlb=";
+  std::string value;
+  for(std::size_t at = t.find(name); at != std::string::npos; at = t.find(name, at + 1))
+    if(at == 0 || t[at - 1] == ':') value = t.substr(at + name.size(), t.find(':', at) - at - name.size());
+  return value;
 }
+
+// Whether glibc's malloc backs its heaps with transparent huge pages
+// (glibc.malloc.hugetlb=1, set by use_huge_pages() below or by the user,
+// where it can); `huge_pages` in --stats.
+bool heap_on_huge_pages() { return hugetlb_tunable() == "1" && huge_page_heap_possible(); }
 
 #if defined(__GLIBC__) && defined(__linux__)
 // An input file from this size on (about 20,000 vertices) is read by a
@@ -277,38 +315,30 @@ constexpr std::uintmax_t min_huge_pages_input_bytes = 512 << 10;
 #endif
 
 // Runs the tool again, in this process, with glibc's malloc backing its
-// heaps with transparent huge pages, when the input is large and the
-// kernel gives such pages on request (THP "madvise", the default of Debian
-// and most distributions).  A large one-shot writes its structures once,
+// heaps with transparent huge pages, when the input is large and
+// huge_page_heap_possible().  A large one-shot writes its structures once,
 // front to back: with 4 KB pages, one page fault per page took 10% to 30%
 // of the run on a 2-core VM, and 2 MB pages took 14% to 22% off the whole
 // process on real outlines and 27% on a plate of 100,000 holes, for 5% to
 // 35% more peak memory (RESULTS.md, "Huge pages for large inputs",
 // twenty-first session).  glibc reads GLIBC_TUNABLES only when a process
-// starts, and offers no call to set this one later, hence exec; glibc
-// older than 2.35 ignores the setting, so it is not tried there.  Nothing
-// is done when GLIBC_TUNABLES already names the setting (so
-// GLIBC_TUNABLES=glibc.malloc.hugetlb=0 turns this off), under LD_PRELOAD
-// (another allocator, valgrind, a heap profiler), or in a sanitized build.
+// starts, and offers no call to set this one later, hence exec.  Nothing is
+// done when GLIBC_TUNABLES already names the setting (so
+// GLIBC_TUNABLES=glibc.malloc.hugetlb=0 turns this off), or when the tool was
+// started through the dynamic loader (/proc/self/exe is then the loader).
 // Should the exec fail, the run goes on here as it is.
 void use_huge_pages(const Options& o, char** argv)
 {
-#if defined(__GLIBC__) && defined(__linux__) && !defined(__SANITIZE_ADDRESS__) && !defined(__SANITIZE_THREAD__)
+#if defined(__GLIBC__) && defined(__linux__)
   const char* tunables = std::getenv("GLIBC_TUNABLES");
   const std::string before = tunables ? tunables : "";
-  const char* preload = std::getenv("LD_PRELOAD");
-  if(before.find("glibc.malloc.hugetlb") != std::string::npos || (preload && *preload)) return;
-  int major = 0, minor = 0;
-  if(std::sscanf(gnu_get_libc_version(), "%d.%d", &major, &minor) != 2 || major < 2 || (major == 2 && minor < 35))
-    return;
+  if(before.find("glibc.malloc.hugetlb") != std::string::npos || getauxval(AT_BASE) == 0) return;
   std::error_code error;
   const std::uintmax_t size = std::filesystem::file_size(o.input, error);
-  if(error || size < min_huge_pages_input_bytes) return;
-  std::ifstream thp("/sys/kernel/mm/transparent_hugepage/enabled");
-  std::string mode;
-  if(!std::getline(thp, mode) || mode.find("[madvise]") == std::string::npos) return;
+  if(error || size < min_huge_pages_input_bytes || !huge_page_heap_possible()) return;
   const std::string value = (before.empty() ? "" : before + ":") + "glibc.malloc.hugetlb=1";
   if(setenv("GLIBC_TUNABLES", value.c_str(), 1) != 0) return;
+  std::fflush(nullptr);
   execv("/proc/self/exe", argv);
   if(tunables)
     setenv("GLIBC_TUNABLES", before.c_str(), 1);
