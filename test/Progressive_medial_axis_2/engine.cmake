@@ -95,7 +95,8 @@ if(PMA_SANITIZER_TESTS AND CMAKE_CXX_COMPILER_ID MATCHES "GNU|Clang")
   add_test(NAME input_asan COMMAND test_input_asan)
   add_test(NAME pruning_asan COMMAND test_pruning_asan)
   if(TARGET sdg_pairs)
-    add_test(NAME tool_asan COMMAND test_tool $<TARGET_FILE:progressive_medial_axis_asan> $<TARGET_FILE:sdg_pairs> ${PMA_TEST_DATA})
+    add_test(NAME tool_asan COMMAND test_tool $<TARGET_FILE:progressive_medial_axis_asan> $<TARGET_FILE:sdg_pairs> ${PMA_TEST_DATA}
+             --sanitized)
   endif()
   set_tests_properties(input_asan pruning_asan PROPERTIES TIMEOUT 1200
                        ENVIRONMENT "ASAN_OPTIONS=detect_leaks=1:abort_on_error=1;UBSAN_OPTIONS=print_stacktrace=1")

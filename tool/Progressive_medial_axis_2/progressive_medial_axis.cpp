@@ -315,7 +315,8 @@ constexpr std::uintmax_t min_huge_pages_input_bytes = 512 << 10;
 #endif
 
 // Runs the tool again, in this process, with glibc's malloc backing its
-// heaps with transparent huge pages, when the input is large and
+// heaps with transparent huge pages, when the input (INPUT and the file of
+// --union together) is large and
 // huge_page_heap_possible().  A large one-shot writes its structures once,
 // front to back: with 4 KB pages, one page fault per page took 10% to 30%
 // of the run on a 2-core VM, and 2 MB pages took 14% to 22% off the whole
@@ -333,9 +334,14 @@ void use_huge_pages(const Options& o, char** argv)
   const char* tunables = std::getenv("GLIBC_TUNABLES");
   const std::string before = tunables ? tunables : "";
   if(before.find("glibc.malloc.hugetlb") != std::string::npos || getauxval(AT_BASE) == 0) return;
-  std::error_code error;
-  const std::uintmax_t size = std::filesystem::file_size(o.input, error);
-  if(error || size < min_huge_pages_input_bytes || !huge_page_heap_possible()) return;
+  // (the input and, with --union, the other polygon's file)
+  std::uintmax_t size = 0;
+  for(const std::string* file : {&o.input, &o.union_with}) {
+    std::error_code error;
+    if(!file->empty()) size += std::filesystem::file_size(*file, error);
+    if(error) return;
+  }
+  if(size < min_huge_pages_input_bytes || !huge_page_heap_possible()) return;
   const std::string value = (before.empty() ? "" : before + ":") + "glibc.malloc.hugetlb=1";
   if(setenv("GLIBC_TUNABLES", value.c_str(), 1) != 0) return;
   std::fflush(nullptr);
