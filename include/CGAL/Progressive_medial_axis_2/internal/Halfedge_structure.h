@@ -20,6 +20,7 @@
 #include <CGAL/assertions.h>
 
 #include <cstddef>
+#include <stdexcept>
 #include <utility>
 #include <vector>
 
@@ -56,6 +57,11 @@ struct Hds_halfedge {
   int vertex = NO_INDEX;     // target vertex
 };
 
+/// Indices of half-edges and input points stored in a vertex take 31 bits
+/// (the flags take the 32nd): the structure holds at most this many
+/// half-edges, and the input at most this many points.
+constexpr std::size_t max_vertex_field_index = std::size_t(1) << 30;
+
 template <class Point_2, class FT>
 struct Hds_vertex {
   // Coordinates and radius are computed when they are needed (see
@@ -63,13 +69,17 @@ struct Hds_vertex {
   // before anyone looks at them.
   Point_2 point;
   FT radius = FT(0);
-  bool pending = false;
   // the generators that define a pending vertex, counter-clockwise: input
   // point indices (p0, p1), with p0 == p1 for a point generator
   int triple[3][2] = {{NO_INDEX, NO_INDEX}, {NO_INDEX, NO_INDEX}, {NO_INDEX, NO_INDEX}};
-  int halfedge = NO_INDEX;   // a half-edge whose target is this vertex
-  int input_point = NO_INDEX; // index of the polygon vertex, if it is one
-  bool alive = true;
+  // (each flag shares 32 bits with an index: 56 bytes a vertex with double
+  // coordinates, not 64; a one-shot holds about 3 vertices an input point)
+  int halfedge : 31;         // a half-edge whose target is this vertex
+  bool pending : 1;
+  int input_point : 31;      // index of the polygon vertex, if it is one
+  bool alive : 1;
+
+  Hds_vertex() : halfedge(NO_INDEX), pending(false), input_point(NO_INDEX), alive(true) {}
 };
 
 template <class Point_2, class FT>
@@ -130,6 +140,8 @@ public:
       he(h + 1) = Halfedge();
     } else {
       h = int(halfedges_.size());
+      if(halfedges_.size() + 2 > max_vertex_field_index)
+        throw std::length_error("Progressive_medial_axis_2: more half-edges than a vertex can index");
       halfedges_.resize(halfedges_.size() + 2);
       zero_length_.push_back(0);
     }
@@ -336,7 +348,7 @@ public:
     free_vector(other.zero_length_);
     vertices_.reserve(vertices_.size() + other.vertices_.size());
     for(Vertex& v : other.vertices_) {
-      shift(v.halfedge, o.halfedge);
+      if(v.halfedge >= 0) v.halfedge = v.halfedge + o.halfedge;   // (a bit-field)
       vertices_.push_back(std::move(v));
     }
     free_vector(other.vertices_);

@@ -428,7 +428,9 @@ private:
     for(std::size_t v = 0; v < data.hds.vertex_capacity(); ++v) {
       auto& V = data.hds.vertex(int(v));
       const int x = v < vertices_a ? 0 : 1;
-      renumber(x, V.input_point);
+      int input_point = V.input_point;   // (a bit-field)
+      renumber(x, input_point);
+      V.input_point = input_point;
       for(auto& t : V.triple) {
         renumber(x, t[0]);
         renumber(x, t[1]);
