@@ -644,8 +644,12 @@ Medial_axis_2<typename Traits::Kernel> medial_axis_2(const Polygon& polygon, con
                                                     Medial_axis_input_check check = CHECK_INPUT,
                                                     Progressive_medial_axis_statistics* statistics = nullptr)
 {
-  return Progressive_medial_axes::internal::one_shot_medial_axis(
-    Progressive_medial_axes::internal::rings_of<typename Traits::Kernel>(polygon), traits, check, statistics);
+  typedef std::vector<std::vector<typename Traits::Kernel::Point_2> > Rings;
+  if constexpr(std::is_same<Polygon, Rings>::value)   // (rings of the traits' points: not copied)
+    return Progressive_medial_axes::internal::one_shot_medial_axis(polygon, traits, check, statistics);
+  else
+    return Progressive_medial_axes::internal::one_shot_medial_axis(
+      Progressive_medial_axes::internal::rings_of<typename Traits::Kernel>(polygon), traits, check, statistics);
 }
 
 /*!

@@ -83,6 +83,9 @@ template <class K, class Range>
 std::vector<typename K::Point_2> ring_of(const Range& ring)
 {
   std::vector<typename K::Point_2> out;
+  if constexpr(std::is_base_of<std::forward_iterator_tag,
+                               typename std::iterator_traits<decltype(std::begin(ring))>::iterator_category>::value)
+    out.reserve(std::size_t(std::distance(std::begin(ring), std::end(ring))));
   for(const auto& p : ring) out.push_back(convert_point<K>(p));
   return out;
 }
@@ -107,6 +110,9 @@ template <class K, class Ring_range>
 std::vector<std::vector<typename K::Point_2> > rings_of(const Ring_range& rings)
 {
   std::vector<std::vector<typename K::Point_2> > out;
+  if constexpr(std::is_base_of<std::forward_iterator_tag,
+                               typename std::iterator_traits<decltype(std::begin(rings))>::iterator_category>::value)
+    out.reserve(std::size_t(std::distance(std::begin(rings), std::end(rings))));
   for(const auto& r : rings) out.push_back(ring_of<K>(r));
   return out;
 }
