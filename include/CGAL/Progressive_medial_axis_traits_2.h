@@ -944,8 +944,13 @@ public:
     return s;
   }
 
-  /// The precision, in bits, of the MPFR stage.
-  static constexpr mpfr_prec_t mpfr_precision = 256;
+  /// The precision, in bits, of the MPFR stage: three 64-bit limbs, where
+  /// MPFR's additions and products take their fast paths (at 256 bits,
+  /// four limbs, they take the general ones).  Near-ties of decimal and
+  /// flattened-curve input ran 2% to 9% faster than at 256 bits; of 841
+  /// shapes, 12 passed one or two more decisions to the exact stages
+  /// (RESULTS.md, twenty-second session).
+  static constexpr mpfr_prec_t mpfr_precision = 191;
 
 private:
   // Evaluates a time: double intervals, MPFR intervals, exactly.
@@ -1411,7 +1416,7 @@ always an exact tie (equal event times, a zero discriminant), and is decided
 - in exact numbers alpha + sqrt(rho), where alpha and rho are a + b sqrt(D)
   with rational a, b, D, when the computation keeps that form, as is usual
   with axis-parallel edges (mazes, CAD parts);
-- otherwise in MPFR interval arithmetic at 256 bits, which decides the
+- otherwise in MPFR interval arithmetic at 191 bits, which decides the
   near-ties that are not ties;
 - and what is left, in nested-root numbers: polynomials with rational coefficients
   in the square roots that the computation takes (segment lengths,

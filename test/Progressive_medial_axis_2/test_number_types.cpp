@@ -294,14 +294,15 @@ void hull_of_four(mpfr_srcptr x0, mpfr_srcptr x1, mpfr_srcptr y0, mpfr_srcptr y1
 }
 
 // Products and quotients of intervals of every sign pattern (positive,
-// negative, containing 0, zero, points), at the inline precision (256 bits)
-// and at a precision whose bounds are on the heap (1024 bits).
+// negative, containing 0, zero, points), at the filtered traits' precision
+// (191 bits), at the largest inline one (256 bits) and at a precision whose
+// bounds are on the heap (1024 bits).
 void mpfr_interval_tests()
 {
   std::mt19937_64 random(7);
   std::uniform_real_distribution<double> u(-3, 3);
   int compared = 0;
-  for(mpfr_prec_t precision : {256, 1024}) {
+  for(mpfr_prec_t precision : {191, 256, 1024}) {
     Mpfr_precision_scope scope(precision);
     auto make = [&](int kind) {
       const double a = u(random), b = u(random);

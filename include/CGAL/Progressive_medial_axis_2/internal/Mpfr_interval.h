@@ -17,8 +17,8 @@
 //
 // Boost.Multiprecision's `mpfr_float` has no directed rounding per
 // operation and `mpfi` (MPFI) is not a dependency of CGAL, hence this class.
-// The bounds of an interval of at most 256 bits (the filtered traits'
-// precision) live in the object (MPFR's custom interface), not on the heap:
+// The bounds of an interval of at most 256 bits (the filtered traits use
+// 191) live in the object (MPFR's custom interface), not on the heap:
 // malloc and free were a third of the MPFR stage's time on symmetric shapes.
 
 #ifndef CGAL_PROGRESSIVE_MEDIAL_AXIS_2_INTERNAL_MPFR_INTERVAL_H
@@ -43,7 +43,7 @@ public:
   /// The precision, in bits, of the intervals created from now on in this thread.
   static mpfr_prec_t& precision()
   {
-    static thread_local mpfr_prec_t p = 256;
+    static thread_local mpfr_prec_t p = 191;   // (as the filtered traits)
     return p;
   }
 
