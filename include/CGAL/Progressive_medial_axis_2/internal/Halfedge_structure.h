@@ -333,6 +333,8 @@ public:
   Offsets append(Halfedge_structure& other)
   {
     CGAL_precondition(!journal_ && !other.journal_);
+    if(halfedges_.size() + other.halfedges_.size() > max_vertex_field_index)
+      throw std::length_error("Progressive_medial_axis_2: more half-edges than a vertex can index");
     const Offsets o{int(halfedges_.size()), int(vertices_.size()), int(faces_.size())};
     auto shift = [](int& i, int by) { if(i >= 0) i += by; };
     halfedges_.reserve(halfedges_.size() + other.halfedges_.size());
