@@ -944,13 +944,8 @@ public:
     return s;
   }
 
-  /// The precision, in bits, of the MPFR stage: three 64-bit limbs, where
-  /// MPFR's additions and products take their fast paths (at 256 bits,
-  /// four limbs, they take the general ones).  Near-ties of decimal and
-  /// flattened-curve input ran 2% to 9% faster than at 256 bits; of 841
-  /// shapes, 12 passed one or two more decisions to the exact stages
-  /// (RESULTS.md, twenty-second session).
-  static constexpr mpfr_prec_t mpfr_precision = 191;
+  /// The precision, in bits, of the MPFR stage (see Mpfr_interval::default_precision).
+  static constexpr mpfr_prec_t mpfr_precision = Mpfr::default_precision;
 
 private:
   // Evaluates a time: double intervals, MPFR intervals, exactly.

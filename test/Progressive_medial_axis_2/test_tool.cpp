@@ -626,20 +626,20 @@ void huge_pages(const std::string& data, bool sanitized)
 {
   const std::string file = tmp + "/large.wkt";
   {
-    std::ofstream f(file);
+    std::ofstream f(tmp + "/small.wkt");
     f.precision(17);
     // (2,000 vertices, the file made large by blanks between them: the size
     // decides, and the sanitized build runs this too)
     const int n = 2000;
     const double pi = 3.14159265358979323846;
-    const std::string blanks(300, ' ');
     f << "POLYGON ((";
     for(int i = 0; i <= n; ++i) {
       const double t = 2 * pi * (i % n) / n, r = 1 + 0.25 * std::sin(7 * t) + 0.05 * std::sin(31 * t);
-      f << (i ? "," + blanks : "") << r * std::cos(t) << " " << r * std::sin(t);
+      f << (i ? ", " : "") << r * std::cos(t) << " " << r * std::sin(t);
     }
     f << "))\n";
   }
+  pad_with_blanks(tmp + "/small.wkt", file, 600 * 1024);
   CHECK(slurp(file).size() > 512 * 1024, "the large input is too small: " << slurp(file).size() << " bytes");
   pairs_against_oracle(file, {-1});
   const std::string cleared = "env -u GLIBC_TUNABLES ";

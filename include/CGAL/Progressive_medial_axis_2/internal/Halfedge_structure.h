@@ -140,8 +140,7 @@ public:
       he(h + 1) = Halfedge();
     } else {
       h = int(halfedges_.size());
-      if(halfedges_.size() + 2 > max_vertex_field_index)
-        throw std::length_error("Progressive_medial_axis_2: more half-edges than a vertex can index");
+      require_indexable(halfedges_.size() + 2);
       halfedges_.resize(halfedges_.size() + 2);
       zero_length_.push_back(0);
     }
@@ -333,8 +332,7 @@ public:
   Offsets append(Halfedge_structure& other)
   {
     CGAL_precondition(!journal_ && !other.journal_);
-    if(halfedges_.size() + other.halfedges_.size() > max_vertex_field_index)
-      throw std::length_error("Progressive_medial_axis_2: more half-edges than a vertex can index");
+    require_indexable(halfedges_.size() + other.halfedges_.size());
     const Offsets o{int(halfedges_.size()), int(vertices_.size()), int(faces_.size())};
     auto shift = [](int& i, int by) { if(i >= 0) i += by; };
     halfedges_.reserve(halfedges_.size() + other.halfedges_.size());
@@ -397,6 +395,12 @@ private:
   static void undo(std::vector<std::pair<int, T> >& log, std::vector<T>& a)
   {
     for(auto it = log.rbegin(); it != log.rend(); ++it) a[it->first] = it->second;
+  }
+  // Refuses a structure of more half-edges than a vertex's 31-bit field indexes.
+  static void require_indexable(std::size_t halfedges)
+  {
+    if(halfedges > max_vertex_field_index)
+      throw std::length_error("Progressive_medial_axis_2: more half-edges than a vertex can index");
   }
   int pop(std::vector<int>& list, Free_list which)
   {

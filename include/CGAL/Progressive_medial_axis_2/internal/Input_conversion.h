@@ -79,13 +79,21 @@ typename K::Point_2 convert_point(const P& p)
   }
 }
 
+// Reserves `out` for the elements of `range` where counting them does not
+// consume it (a forward range).
+template <class Vector, class Range>
+void reserve_for(Vector& out, const Range& range)
+{
+  if constexpr(std::is_base_of<std::forward_iterator_tag,
+                               typename std::iterator_traits<decltype(std::begin(range))>::iterator_category>::value)
+    out.reserve(std::size_t(std::distance(std::begin(range), std::end(range))));
+}
+
 template <class K, class Range>
 std::vector<typename K::Point_2> ring_of(const Range& ring)
 {
   std::vector<typename K::Point_2> out;
-  if constexpr(std::is_base_of<std::forward_iterator_tag,
-                               typename std::iterator_traits<decltype(std::begin(ring))>::iterator_category>::value)
-    out.reserve(std::size_t(std::distance(std::begin(ring), std::end(ring))));
+  reserve_for(out, ring);
   for(const auto& p : ring) out.push_back(convert_point<K>(p));
   return out;
 }
@@ -110,9 +118,7 @@ template <class K, class Ring_range>
 std::vector<std::vector<typename K::Point_2> > rings_of(const Ring_range& rings)
 {
   std::vector<std::vector<typename K::Point_2> > out;
-  if constexpr(std::is_base_of<std::forward_iterator_tag,
-                               typename std::iterator_traits<decltype(std::begin(rings))>::iterator_category>::value)
-    out.reserve(std::size_t(std::distance(std::begin(rings), std::end(rings))));
+  reserve_for(out, rings);
   for(const auto& r : rings) out.push_back(ring_of<K>(r));
   return out;
 }
