@@ -115,9 +115,11 @@ Triple_relations triple_relations(const Site_ s[3])
         rel.point_is_source[i][j] = (s[i].p == s[j].p);
         rel.point_is_target[i][j] = (s[i].p == s[j].q);
       }
-      if(!s[i].is_point && !s[j].is_point)
-        rel.flat_join[i][j] = (s[i].q == s[j].p) &&
-                              orientation(s[i].p, s[i].q, s[j].q) == COLLINEAR;
+      if(!s[i].is_point && !s[j].is_point && s[i].q == s[j].p) {
+        const Orientation turn = orientation(s[i].p, s[i].q, s[j].q);
+        rel.flat_join[i][j] = (turn == COLLINEAR);
+        rel.corner_turn[i][j] = static_cast<signed char>(int(turn));
+      }
     }
   if(s[0].is_point && s[1].is_point && s[2].is_point)
     rel.ppp_orientation = int(orientation(s[0].p, s[1].p, s[2].p));
@@ -372,14 +374,15 @@ Gmpq exact_gmpq(const boost::multiprecision::number<Backend, ET>& q)
 
 /// Converts a coordinate (a double, or an exact number of Epeck) to the
 /// number type NT of a stage of the filtered traits: exactly, except for
-/// the intervals, which enclose it (double-double takes only doubles).
+/// the intervals, which enclose it.
 template <class NT>
 struct To_nt_convert {
   NT operator()(double x) const { return NT(x); }
   template <class T>
   NT operator()(const T& x) const
   {
-    if constexpr(std::is_same<NT, Interval_nt<false> >::value) return NT(CGAL::to_interval(x));
+    if constexpr(std::is_same<NT, Interval_nt<false> >::value || std::is_same<NT, Double_double_interval>::value)
+      return NT(CGAL::to_interval(x));
     else if constexpr(std::is_same<NT, Double_double>::value) {
       const std::pair<double, double> i = CGAL::to_interval(x);
       if(i.first != i.second)
@@ -638,8 +641,7 @@ private:
     Progressive_medial_axes::internal::Circle_nt<FT> circle;
     if constexpr(Floating) {
       // a vertex whose double construction is implausible or ambiguous is
-      // built by the exact-decision model (double-double once its branches
-      // are decided)
+      // built by the exact-decision model
       bool built = false;
       try {
         built = Progressive_medial_axes::internal::medial_circle(sn, rel, circle) &&
@@ -748,6 +750,7 @@ class Filtered_event_time
 {
 public:
   typedef Interval_nt<false> Interval;
+  typedef Double_double_interval Dd;
   typedef Mpfr_interval Mpfr;
 
   Filtered_event_time() : approx_(0) {}
@@ -773,6 +776,8 @@ public:
 
   /// What the stages after the intervals found, computed once.
   struct Exact_values {
+    Dd dd;
+    signed char dd_state = 2;       // 2 not computed yet, else as returned by dd()
     std::unique_ptr<Mpfr> mpfr;
     signed char mpfr_state = 2;     // 2 not computed yet, else as returned by mpfr()
     std::unique_ptr<One_root_value> one_root;
@@ -780,6 +785,29 @@ public:
     signed char short_state = 0;    // 0 unknown, else the sign is short_coordinates()
     std::shared_ptr<char> tie;       // shared by times found exactly equal
   };
+
+  /// The time in double-double intervals, computed once: -1 if a branch
+  /// of the computation cannot be decided, 0 if the event does not exist,
+  /// 1 if `*value` holds the time.
+  template <class CK>
+  int dd(const Dd** value) const
+  {
+    Exact_values& x = exact();
+    if(x.dd_state == 2) {
+      x.dd_state = -1;
+      try {
+        To_nt_convert<Dd> cv;
+        bool undecided = false;
+        if(evaluate_time<Dd>(kind_, c_, s_, relations<CK>(), cv, x.dd, nullptr, &undecided))
+          x.dd_state = 1;
+        else if(!undecided)
+          x.dd_state = 0;
+      } catch(Uncertain_conversion_exception&) {
+      }
+    }
+    *value = &x.dd;
+    return x.dd_state;
+  }
 
   /// The time in MPFR intervals at the current MPFR precision, computed
   /// once: -1 if a branch of the computation cannot be decided, 0 if the
@@ -904,6 +932,7 @@ public:
   typedef typename Base::Site_2 Site_2;
   typedef typename Base::Event_time_2 Event_time_2;
   typedef Interval_nt<false> Interval;
+  typedef Progressive_medial_axes::internal::Double_double_interval Dd;
   typedef Progressive_medial_axes::internal::Mpfr_interval Mpfr;
   typedef Progressive_medial_axes::internal::Nested_root_number Nested;
 
@@ -914,10 +943,13 @@ public:
   struct Filter_statistics {
     std::size_t interval_evaluations = 0;      ///< times and disks evaluated in double intervals
     std::size_t double_double_evaluations = 0; ///< disks constructed in double-double arithmetic
-    std::size_t mpfr_evaluations = 0;          ///< ... that neither the double intervals nor double-double settled
+    std::size_t dd_interval_evaluations = 0;   ///< times that double intervals left undecided and double-double intervals decided
+    std::size_t dd_interval_disks = 0;         ///< disks constructed in double-double intervals (double-double did not settle them)
+    std::size_t mpfr_evaluations = 0;          ///< times and disks that neither the double intervals nor double-double settled
     std::size_t rational_evaluations = 0;      ///< ... that were decided in exact one-root numbers
     std::size_t exact_evaluations = 0;         ///< ... that needed the nested-root numbers
-    std::size_t mpfr_comparisons = 0;          ///< comparisons of times decided by MPFR intervals
+    std::size_t dd_interval_comparisons = 0;   ///< comparisons of times decided by double-double intervals
+    std::size_t mpfr_comparisons = 0;          ///< ... by MPFR intervals
     std::size_t rational_comparisons = 0;      ///< ... decided in exact one-root numbers
     std::size_t exact_comparisons = 0;         ///< ... decided in nested-root numbers
     std::size_t exact_ties = 0;                ///< comparisons that found two times equal (one-root or nested)
@@ -928,9 +960,12 @@ public:
     {
       interval_evaluations += b.interval_evaluations - a.interval_evaluations;
       double_double_evaluations += b.double_double_evaluations - a.double_double_evaluations;
+      dd_interval_evaluations += b.dd_interval_evaluations - a.dd_interval_evaluations;
+      dd_interval_disks += b.dd_interval_disks - a.dd_interval_disks;
       mpfr_evaluations += b.mpfr_evaluations - a.mpfr_evaluations;
       rational_evaluations += b.rational_evaluations - a.rational_evaluations;
       exact_evaluations += b.exact_evaluations - a.exact_evaluations;
+      dd_interval_comparisons += b.dd_interval_comparisons - a.dd_interval_comparisons;
       mpfr_comparisons += b.mpfr_comparisons - a.mpfr_comparisons;
       rational_comparisons += b.rational_comparisons - a.rational_comparisons;
       exact_comparisons += b.exact_comparisons - a.exact_comparisons;
@@ -948,7 +983,8 @@ public:
   static constexpr mpfr_prec_t mpfr_precision = Mpfr::default_precision;
 
 private:
-  // Evaluates a time: double intervals, MPFR intervals, exactly.
+  // Evaluates a time: double intervals, double-double intervals, MPFR
+  // intervals, exactly.
   static bool time(Progressive_medial_axes::internal::Time_kind kind, const Site_2& line, const Site_2* s, Event_time_2& t)
   {
     t.kind_ = kind;
@@ -980,6 +1016,19 @@ private:
           return true;
         }
       } catch(Uncertain_conversion_exception&) {
+      }
+    }
+    // (with short coordinates, what the double intervals cannot decide is
+    // an exact tie as a rule, which no interval decides: see before_exact())
+    if(!t.short_coordinates()) {
+      const typename Event_time_2::Dd* v;
+      const int state = t.template dd<CK>(&v);
+      if(state >= 0) {
+        ++filter_statistics().dd_interval_evaluations;
+        if(state == 0)
+          return false;
+        t.approx_ = v->to_interval();
+        return true;
       }
     }
     ++filter_statistics().mpfr_evaluations;
@@ -1036,6 +1085,16 @@ private:
     // already found equal
     if(a.exact_ && b.exact_ && a.exact_->tie && a.exact_->tie == b.exact_->tie)
       return EQUAL;
+    if(!(a.short_coordinates() && b.short_coordinates())) {
+      const typename Event_time_2::Dd *va, *vb;
+      if(a.template dd<CK>(&va) == 1 && b.template dd<CK>(&vb) == 1) {
+        const Uncertain<Comparison_result> m = compare(*va, *vb);
+        if(is_certain(m)) {
+          ++filter_statistics().dd_interval_comparisons;
+          return get_certain(m);
+        }
+      }
+    }
     const std::optional<Comparison_result> decided = before_exact<Comparison_result>(
       [&]() -> std::optional<Comparison_result> {
         const Mpfr *va, *vb;
@@ -1150,11 +1209,14 @@ private:
       // The intervals took every branch: the same computation in
       // double-double arithmetic (about 106 bits).  A coordinate is kept
       // only if it rounds to the same double as every value within an error
-      // bound of it; else it goes on to the MPFR stage, and exact values on
-      // a rounding boundary (zeros, midpoints of two doubles: the ties of
-      // symmetric and decimal input) to the exact stages, so that the disk
-      // is always the exact one correctly rounded.  Coordinates far from 1
-      // (near 1e150 and beyond) overflow its products and go on too.
+      // bound of it (rounds_within()); else it goes on to the double-double
+      // intervals, then to MPFR, and exact values on a rounding boundary
+      // (zeros, midpoints of two doubles: the ties of symmetric and decimal
+      // input) to the exact stages, so that the disk is always the exact one
+      // correctly rounded.  Coordinates far from 1 (near 1e150 and beyond)
+      // overflow its products and go on too.  This plain double-double
+      // costs about half as much as the intervals, and settles nearly every
+      // vertex of real outlines (RESULTS.md, twenty-third session).
       ++filter_statistics().double_double_evaluations;
       Progressive_medial_axes::internal::Circle_nt<Progressive_medial_axes::internal::Double_double> circle;
       try {
@@ -1169,6 +1231,24 @@ private:
             return true;
         }
       } catch(Progressive_medial_axes::internal::Inexact_double_double_input&) {
+      }
+    }
+    {
+      // The same computation in double-double intervals (about 100 bits,
+      // with a rigorous error radius), which also decide the branches that
+      // the double intervals could not.  A coordinate is kept if every
+      // value of its interval rounds to the same double.
+      ++filter_statistics().dd_interval_disks;
+      Progressive_medial_axes::internal::Circle_nt<Dd> circle;
+      try {
+        const int found = disk_nt_decided<Dd>(s, rel, circle);
+        if(found == 0)
+          return false;
+        const Dd* c[3] = {&circle.x, &circle.y, &circle.r};
+        if(found > 0 &&
+           settle([&](int i) { return c[i]->rounds_to_one_double(); }, [&](int i) { return c[i]->to_double(); }))
+          return true;
+      } catch(Uncertain_conversion_exception&) {
       }
     }
     ++filter_statistics().mpfr_evaluations;
@@ -1411,8 +1491,9 @@ always an exact tie (equal event times, a zero discriminant), and is decided
 - in exact numbers alpha + sqrt(rho), where alpha and rho are a + b sqrt(D)
   with rational a, b, D, when the computation keeps that form, as is usual
   with axis-parallel edges (mazes, CAD parts);
-- otherwise in MPFR interval arithmetic at 191 bits, which decides the
-  near-ties that are not ties;
+- otherwise in double-double intervals (about 100 bits, a value and a
+  rigorous error radius), then in MPFR interval arithmetic at 191 bits,
+  which decide the near-ties that are not ties;
 - and what is left, in nested-root numbers: polynomials with rational coefficients
   in the square roots that the computation takes (segment lengths,
   discriminants, chords), each root possibly of a number holding others,
@@ -1423,9 +1504,9 @@ Constructed vertices: the double intervals decide the branches of the
 construction (which of two tangent circles, ...); the disk is then computed
 in double-double arithmetic (about 106 bits) and rounded to double, which
 gives the exact disk correctly rounded in all but ill-conditioned cases.
-When the intervals cannot decide a branch, MPFR intervals are used until
-both ends round to the same double (the exact point correctly rounded), or
-else the exact value is rounded to double.  Points are those of `CK`
+The others are computed in double-double intervals, then in MPFR intervals,
+until every value of the interval rounds to the same double (the exact
+point correctly rounded), or else the exact value is rounded to double.  Points are those of `CK`
 (double coordinates).
 
 With `Epeck` the decisions use the exact rational coordinates of the

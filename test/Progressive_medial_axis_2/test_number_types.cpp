@@ -5,7 +5,8 @@
 // several roots, roots of roots, roots that denest, exact zeros, division;
 // and the MPFR intervals' products and quotients by the signs of the bounds
 // (internal/Mpfr_interval.h) against the hull of the four products; and
-// the certification of double-double results (internal/Double_double.h).
+// the certification of double-double results and the double-double
+// intervals (internal/Double_double.h), those against MPFR.
 #include <CGAL/Progressive_medial_axis_2/internal/Double_double.h>
 #include <CGAL/Progressive_medial_axis_2/internal/Mpfr_interval.h>
 #include <CGAL/Progressive_medial_axis_2/internal/One_root_rational.h>
@@ -18,6 +19,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <random>
+#include <vector>
 
 using CGAL::Gmpq;
 using CGAL::Progressive_medial_axes::internal::Not_one_root;
@@ -369,9 +371,135 @@ void double_double_tests()
         "double-double: the bound of a cancelling square root");
 }
 
+// The double-double intervals (internal/Double_double.h) against MPFR
+// intervals at 1024 bits, on random expressions of sums, differences,
+// products, quotients and square roots, with cancellations, at scales from
+// 2^-1000 to 2^980: every double-double interval must enclose the MPFR one
+// (compared exactly), or the operation must throw; a certain comparison
+// must be MPFR's; a value said to round to one double must.
+void double_double_interval_tests()
+{
+  using CGAL::Progressive_medial_axes::internal::Double_double_interval;
+  typedef Double_double_interval Dd;
+  Mpfr_precision_scope scope(1024);
+  mpfr_t c, lo, hi;
+  mpfr_init2(c, 4400);
+  mpfr_init2(lo, 4400);
+  mpfr_init2(hi, 4400);
+  auto encloses = [&](const Dd& d, const Mpfr_interval& m) {
+    mpfr_set_d(c, d.value().hi(), MPFR_RNDN);
+    mpfr_add_d(c, c, d.value().lo(), MPFR_RNDN);   // exact at 4400 bits
+    mpfr_sub_d(lo, c, d.radius(), MPFR_RNDN);
+    mpfr_add_d(hi, c, d.radius(), MPFR_RNDN);
+    return mpfr_lessequal_p(lo, m.lower()) && mpfr_greaterequal_p(hi, m.upper()) && d.inf() <= m.inf() &&
+           d.sup() >= m.sup();
+  };
+  struct Both {
+    Dd d;
+    Mpfr_interval m;
+  };
+  std::mt19937_64 random(11);
+  int checked = 0, narrow = 0, rounded = 0, comparisons = 0;
+  for(int scale : {0, -1000, -600, 500, 980}) {
+    const double factor = std::ldexp(1.0, scale);
+    for(int round = 0; round < 400; ++round) {
+      std::vector<Both> v;
+      for(int i = 0; i < 6; ++i) {
+        // small integers, and doubles with random bits (repeated below, so
+        // that differences cancel)
+        const double x = (random() % 2 ? double(int(random() % 41) - 20)
+                                       : std::ldexp(double(random() >> 11), -53 + int(random() % 9) - 4)) *
+                         factor;
+        v.push_back(Both{Dd(x), Mpfr_interval(x)});
+      }
+      for(int step = 0; step < 40; ++step) {
+        const Both& a = v[random() % v.size()];
+        const Both& b = v[random() % v.size()];
+        const int op = int(random() % 6);
+        Both r;
+        bool dd_threw = false, mpfr_threw = false;
+        try {
+          switch(op) {
+          case 0: r.m = a.m + b.m; break;
+          case 1: r.m = a.m - b.m; break;
+          case 2: r.m = a.m * b.m; break;
+          case 3: r.m = a.m / b.m; break;
+          case 4: r.m = sqrt(abs(a.m)); break;
+          default: r.m = a.m / Mpfr_interval(3) * Mpfr_interval(3) - a.m + b.m; break;
+          }
+        } catch(CGAL::Uncertain_conversion_exception&) {
+          mpfr_threw = true;
+        }
+        try {
+          switch(op) {
+          case 0: r.d = a.d + b.d; break;
+          case 1: r.d = a.d - b.d; break;
+          case 2: r.d = a.d * b.d; break;
+          case 3: r.d = a.d / b.d; break;
+          case 4: r.d = sqrt(abs(a.d)); break;
+          default: r.d = a.d / Dd(3) * Dd(3) - a.d + b.d; break;
+          }
+        } catch(CGAL::Uncertain_conversion_exception&) {
+          dd_threw = true;
+        }
+        if(mpfr_threw || dd_threw || mpfr_inf_p(r.m.upper()) || mpfr_inf_p(r.m.lower()))
+          continue;
+        ++checked;
+        if(!encloses(r.d, r.m)) {
+          ++pma_test::failures();
+          std::printf("FAIL: a double-double interval misses the value (scale 2^%d, operation %d)\n", scale, op);
+          mpfr_printf("  MPFR [%.30Re, %.30Re]\n  dd   %.17g + %.17g +- %.17g\n", r.m.lower(), r.m.upper(),
+                      r.d.value().hi(), r.d.value().lo(), r.d.radius());
+        }
+        const double mid = std::fabs(r.d.value().hi());
+        if(mid > 0 && r.d.radius() < mid * std::ldexp(1.0, -90))
+          ++narrow;
+        if(r.d.rounds_to_one_double()) {
+          ++rounded;
+          CHECK(mpfr_get_d(r.m.lower(), MPFR_RNDN) == r.d.to_double() &&
+                  mpfr_get_d(r.m.upper(), MPFR_RNDN) == r.d.to_double(),
+                "double-double interval: rounds to the value's double");
+        }
+        for(const Both& o : v) {
+          CGAL::Uncertain<CGAL::Comparison_result> cd;
+          try {
+            cd = compare(r.d, o.d);
+          } catch(CGAL::Uncertain_conversion_exception&) {   // the difference is out of range
+            continue;
+          }
+          if(!CGAL::is_certain(cd))
+            continue;
+          ++comparisons;
+          const CGAL::Uncertain<CGAL::Comparison_result> cm = compare(r.m, o.m);
+          // (1024-bit MPFR intervals decide whatever double-double ones can)
+          CHECK(CGAL::is_certain(cm) && CGAL::get_certain(cm) == CGAL::get_certain(cd),
+                "double-double interval: a certain comparison is the exact one");
+        }
+        v.push_back(r);
+      }
+    }
+  }
+  mpfr_clear(c);
+  mpfr_clear(lo);
+  mpfr_clear(hi);
+  std::printf("%d double-double interval results, %d narrower than 2^-90, %d rounded, %d comparisons\n", checked,
+              narrow, rounded, comparisons);
+  CHECK(checked > 20000 && narrow > checked / 4 && rounded > checked / 4, "double-double intervals: enough cases");
+  // the typical widths
+  const Dd third = Dd(1) / Dd(3), root2 = sqrt(Dd(2));
+  CHECK(third.radius() < std::ldexp(1.0, -95) && root2.radius() < std::ldexp(1.0, -94),
+        "double-double interval: 1/3 and sqrt 2 to about 95 bits");
+  CHECK(third.rounds_to_one_double() && third.to_double() == 1.0 / 3, "double-double interval: 1/3 rounds");
+  // exact ties are never decided: a midpoint of two doubles, a zero
+  const Dd midpoint = (Dd(1) + Dd(std::ldexp(1.0, -53))) * Dd(3) / Dd(3);
+  CHECK(!midpoint.rounds_to_one_double(), "double-double interval: a midpoint is left to exact arithmetic");
+  CHECK(!CGAL::is_certain(compare(third * Dd(3), Dd(1))), "double-double interval: 3 (1/3) = 1 is undecided");
+}
+
 int main()
 {
   double_double_tests();
+  double_double_interval_tests();
   mpfr_interval_tests();
   small_rational_tests();
   nested_root_tests<Nested_root_number, Nested_root_context>();

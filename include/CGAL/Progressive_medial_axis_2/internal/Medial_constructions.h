@@ -129,6 +129,10 @@ struct Triple_relations {
   // segments i and j lie on one line, and the target of i is the source of j
   // (a flat vertex of angle pi joins them)
   bool flat_join[3][3] = {};
+  // segment i ends where segment j starts, at a corner that is not flat:
+  // 1 where the boundary turns left there (a convex corner, the interior
+  // being on the left), -1 where it turns right (reflex), else 0
+  signed char corner_turn[3][3] = {};
   // sites i and j are the same generator
   bool same[3][3] = {};
   // exact sign of the orientation of three point sites (PPP only)
@@ -634,12 +638,30 @@ int touches_segments(const Site_nt<NT> s[3], const Triple_relations& rel, const 
                     rel.flat_join[i][j] || rel.flat_join[j][i]))
         known = true;
     if(known) continue;
+    // At a corner shared with another segment of the triple, a disk of
+    // positive radius tangent to both lines on their interior sides touches
+    // them at the distance r cot(alpha / 2) from the corner, alpha the
+    // interior angle: on both segments' sides of it at a convex corner,
+    // beyond them at a reflex one.  Decided so, exactly, rather than by the
+    // sign of a contact that may lie a hair from the corner (flattened
+    // curves: consecutive segments that turn by 1e-14 rad).
+    int at_source = 0, at_target = 0;
+    for(int j = 0; j < 3; ++j) {
+      if(rel.corner_turn[j][i] != 0) at_source = rel.corner_turn[j][i];
+      if(rel.corner_turn[i][j] != 0) at_target = rel.corner_turn[i][j];
+    }
+    const bool at_corner = (at_source != 0 || at_target != 0) && decided(c.r > 0) == 1;
+    if(at_corner && (at_source < 0 || at_target < 0)) return 0;
     NT dx = s[i].bx - s[i].ax, dy = s[i].by - s[i].ay;
     NT slack = NT(tolerance) * (dx * dx + dy * dy);
-    const int before = decided((c.x - s[i].ax) * dx + (c.y - s[i].ay) * dy < -slack);
-    if(before != 0) return before < 0 ? -1 : 0;
-    const int beyond = decided((s[i].bx - c.x) * dx + (s[i].by - c.y) * dy < -slack);
-    if(beyond != 0) return beyond < 0 ? -1 : 0;
+    if(!(at_corner && at_source > 0)) {
+      const int before = decided((c.x - s[i].ax) * dx + (c.y - s[i].ay) * dy < -slack);
+      if(before != 0) return before < 0 ? -1 : 0;
+    }
+    if(!(at_corner && at_target > 0)) {
+      const int beyond = decided((s[i].bx - c.x) * dx + (s[i].by - c.y) * dy < -slack);
+      if(beyond != 0) return beyond < 0 ? -1 : 0;
+    }
   }
   return 1;
 }
