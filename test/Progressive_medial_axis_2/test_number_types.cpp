@@ -19,6 +19,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <random>
+#include <type_traits>
 #include <vector>
 
 using CGAL::Gmpq;
@@ -417,31 +418,25 @@ void double_double_interval_tests()
         const Both& b = v[random() % v.size()];
         const int op = int(random() % 6);
         Both r;
-        bool dd_threw = false, mpfr_threw = false;
-        try {
-          switch(op) {
-          case 0: r.m = a.m + b.m; break;
-          case 1: r.m = a.m - b.m; break;
-          case 2: r.m = a.m * b.m; break;
-          case 3: r.m = a.m / b.m; break;
-          case 4: r.m = sqrt(abs(a.m)); break;
-          default: r.m = a.m / Mpfr_interval(3) * Mpfr_interval(3) - a.m + b.m; break;
+        // the operation in one number type: false if it throws (undecided)
+        auto apply = [op](const auto& x, const auto& y, auto& result) {
+          typedef std::decay_t<decltype(x)> N;
+          try {
+            switch(op) {
+            case 0: result = x + y; break;
+            case 1: result = x - y; break;
+            case 2: result = x * y; break;
+            case 3: result = x / y; break;
+            case 4: result = sqrt(abs(x)); break;
+            default: result = x / N(3) * N(3) - x + y; break;
+            }
+          } catch(CGAL::Uncertain_conversion_exception&) {
+            return false;
           }
-        } catch(CGAL::Uncertain_conversion_exception&) {
-          mpfr_threw = true;
-        }
-        try {
-          switch(op) {
-          case 0: r.d = a.d + b.d; break;
-          case 1: r.d = a.d - b.d; break;
-          case 2: r.d = a.d * b.d; break;
-          case 3: r.d = a.d / b.d; break;
-          case 4: r.d = sqrt(abs(a.d)); break;
-          default: r.d = a.d / Dd(3) * Dd(3) - a.d + b.d; break;
-          }
-        } catch(CGAL::Uncertain_conversion_exception&) {
-          dd_threw = true;
-        }
+          return true;
+        };
+        const bool mpfr_threw = !apply(a.m, b.m, r.m);
+        const bool dd_threw = !apply(a.d, b.d, r.d);
         if(mpfr_threw || dd_threw || mpfr_inf_p(r.m.upper()) || mpfr_inf_p(r.m.lower()))
           continue;
         ++checked;
