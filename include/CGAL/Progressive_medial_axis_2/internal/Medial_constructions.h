@@ -644,12 +644,16 @@ int touches_segments(const Site_nt<NT> s[3], const Triple_relations& rel, const 
     // interior angle: on both segments' sides of it at a convex corner,
     // beyond them at a reflex one.  Decided so, exactly, rather than by the
     // sign of a contact that may lie a hair from the corner (flattened
-    // curves: consecutive segments that turn by 1e-14 rad).
+    // curves: consecutive segments that turn by 1e-14 rad).  Not in
+    // floating point: the double model's disk of such a corner can be off
+    // by more than its contact, and the tolerance below keeps its merges
+    // consistent (a sliver polygon gave a wrong axis).
     int at_source = 0, at_target = 0;
-    for(int j = 0; j < 3; ++j) {
-      if(rel.corner_turn[j][i] != 0) at_source = rel.corner_turn[j][i];
-      if(rel.corner_turn[i][j] != 0) at_target = rel.corner_turn[i][j];
-    }
+    if constexpr(!std::is_floating_point<NT>::value)
+      for(int j = 0; j < 3; ++j) {
+        if(rel.corner_turn[j][i] != 0) at_source = rel.corner_turn[j][i];
+        if(rel.corner_turn[i][j] != 0) at_target = rel.corner_turn[i][j];
+      }
     const bool at_corner = (at_source != 0 || at_target != 0) && decided(c.r > 0) == 1;
     if(at_corner && (at_source < 0 || at_target < 0)) return 0;
     NT dx = s[i].bx - s[i].ax, dy = s[i].by - s[i].ay;
