@@ -38,6 +38,7 @@
 #include <limits>
 #include <memory>
 #include <optional>
+#include <stdexcept>
 #include <type_traits>
 #include <cstdint>
 #include <cstring>
@@ -395,6 +396,200 @@ struct To_nt_convert {
     else return NT(exact_gmpq(x));
   }
 };
+
+/// The mirror (reflection) that maps the point x to the point y != x,
+/// exact, in GMP rationals: its axis is the bisector of x and y, and the
+/// image of z is z - ((2z - x - y).n / |n|^2) n, with n = y - x.  A site's
+/// image is its mirror image with the segment reversed, so that the shape
+/// stays on its left.
+template <class Point>
+class Exact_mirror
+{
+  typedef Gmp_rational Q;
+  struct Xy {
+    Q x, y;
+  };
+
+public:
+  Exact_mirror(const Point& x, const Point& y)
+  {
+    const Xy a = xy(x), b = xy(y);
+    nx_ = b.x - a.x;
+    ny_ = b.y - a.y;
+    mx_ = a.x + b.x;
+    my_ = a.y + b.y;
+    nn_ = nx_ * nx_ + ny_ * ny_;
+  }
+
+  /// Whether w is the image of z.
+  bool image(const Point& z, const Point& w) const
+  {
+    const Xy a = xy(z), b = xy(w);
+    const Q d = dot(a);
+    return nn_ * (a.x - b.x) == d * nx_ && nn_ * (a.y - b.y) == d * ny_;
+  }
+  /// Whether the site v is the image of the site u.
+  template <class Site_>
+  bool image(const Site_& u, const Site_& v) const
+  {
+    if(u.is_point != v.is_point)
+      return false;
+    return u.is_point ? image(u.p, v.p) : (image(u.q, v.p) && image(u.p, v.q));
+  }
+  /// Whether the segment v lies on the line of the image of the segment u.
+  template <class Site_>
+  bool on_image_line(const Site_& u, const Site_& v) const
+  {
+    const Xy a = apply(xy(u.p)), b = apply(xy(u.q));
+    return on_line(a, b, xy(v.p)) && on_line(a, b, xy(v.q));
+  }
+
+  /// Whether the segments u and v lie on one line.
+  template <class Site_>
+  static bool collinear(const Site_& u, const Site_& v)
+  {
+    const Xy a = xy(u.p), b = xy(u.q);
+    return on_line(a, b, xy(v.p)) && on_line(a, b, xy(v.q));
+  }
+
+private:
+  static Xy xy(const Point& p)
+  {
+    To_nt_convert<Q> cv;
+    return Xy{cv(p.x()), cv(p.y())};
+  }
+  static bool on_line(const Xy& a, const Xy& b, const Xy& z)
+  {
+    return (b.x - a.x) * (z.y - a.y) == (b.y - a.y) * (z.x - a.x);
+  }
+  Q dot(const Xy& z) const { return (Q(2) * z.x - mx_) * nx_ + (Q(2) * z.y - my_) * ny_; }
+  Xy apply(const Xy& z) const
+  {
+    const Q f = dot(z) / nn_;
+    return Xy{z.x - f * nx_, z.y - f * ny_};
+  }
+
+  Q nx_, ny_, mx_, my_, nn_;
+};
+
+/// The mirror that swaps two segments of the triple `s`, i and j, that are
+/// not on one line, or false.
+template <class Site_>
+std::optional<Exact_mirror<typename Site_::Point_2> > swapping_mirror(const Site_* s, int i, int j)
+{
+  typedef Exact_mirror<typename Site_::Point_2> Mirror;
+  if(s[i].is_point || s[j].is_point || s[i] == s[j] || Mirror::collinear(s[i], s[j]))
+    return std::nullopt;
+  // (segments not on one line: one of the two pairs of ends is two points)
+  const Mirror m = s[i].q != s[j].p ? Mirror(s[i].q, s[j].p) : Mirror(s[i].p, s[j].q);
+  if(!m.image(s[i], s[j]))
+    return std::nullopt;
+  return m;
+}
+
+/// Whether two event times of one kind along the segment `line`, of the
+/// triples `s` and `t`, are equal by a symmetry.  The disk of a triple
+/// whose sites include a segment is tangent to the segment's line, on the
+/// shape's side, with the others: its centre is at the same signed distance
+/// from the lines of its segments.  It is so when:
+/// 1. a mirror maps `s` onto `t` (in the reversed cyclic order, since a
+///    mirror turns counter-clockwise into clockwise), which maps the disk of
+///    `s` onto the disk of `t`, and either its axis is the line (it fixes
+///    the line point by point: the two disks have the same foot on it and
+///    the same chord), or it swaps two sites of `s` (the centre of a disk
+///    that touches two points swapped by the mirror, or two segments not on
+///    one line, is on the axis: on the other bisector of two segments' lines
+///    the signed distances are opposite; so the mirror maps the disk onto
+///    itself, and the two disks are one);
+/// 2. one mirror swaps two segments of `s` and two of `t`: both disks are
+///    then symmetric, so each touches the images of its segments too, and
+///    with them two segments u and v whose lines are neither one line nor
+///    mirror images of each other.  Both centres are then where the axis
+///    meets the line of the points at equal signed distance from u and v,
+///    which is not the axis: one point, one disk.
+/// Symmetric shapes have such ties: DejaVuSerif-Bold `question`, whose hook
+/// is symmetric about a diagonal of the triangulation and whose dot is a
+/// rounded square, FreeMono's strokes with their round ends, regular
+/// polygons, where many segments touch one circle.  The nested-root stage
+/// decided them by algebra, at most of their time.
+template <class Site_>
+bool mirror_tie(const Site_& line, const Site_* s, const Site_* t)
+{
+  typedef typename Site_::Point_2 Point;
+  typedef Exact_mirror<Point> Mirror;
+  // 1.
+  for(int k = 0; k < 3; ++k) {
+    // the pairs (point, image) of this rotation
+    std::pair<const Point*, const Point*> pairs[6];
+    int n_pairs = 0;
+    bool types = true;
+    for(int j = 0; j < 3 && types; ++j) {
+      const Site_& x = s[(k + 3 - j) % 3];
+      const Site_& y = t[j];
+      if(x.is_point != y.is_point) {
+        types = false;
+      } else if(x.is_point) {
+        pairs[n_pairs++] = {&x.p, &y.p};
+      } else {
+        pairs[n_pairs++] = {&x.q, &y.p};
+        pairs[n_pairs++] = {&x.p, &y.q};
+      }
+    }
+    if(!types)
+      continue;
+    int moved = 0;
+    while(moved < n_pairs && *pairs[moved].first == *pairs[moved].second)
+      ++moved;
+    if(moved == n_pairs)
+      continue;
+    const Mirror m(*pairs[moved].first, *pairs[moved].second);
+    bool mirror = true;
+    for(int i = 0; i < n_pairs && mirror; ++i)
+      if(i != moved)
+        mirror = m.image(*pairs[i].first, *pairs[i].second);
+    if(!mirror)
+      continue;
+    if(m.image(line.p, line.p) && m.image(line.q, line.q))
+      return true;
+    for(int i = 0; i < 3; ++i)
+      for(int j = 0; j < 3; ++j) {
+        if(i == j || s[i].is_point != s[j].is_point || s[i] == s[j])
+          continue;
+        if(m.image(s[i], s[j]) && (s[i].is_point || !Mirror::collinear(s[i], s[j])))
+          return true;
+      }
+  }
+  // 2.
+  for(int i = 0; i < 3; ++i)
+    for(int j = i + 1; j < 3; ++j) {
+      const std::optional<Mirror> m = swapping_mirror(s, i, j);
+      if(!m)
+        continue;
+      bool t_symmetric = false;
+      for(int a = 0; a < 3 && !t_symmetric; ++a)
+        for(int b = a + 1; b < 3 && !t_symmetric; ++b)
+          t_symmetric = !t[a].is_point && !t[b].is_point && !Mirror::collinear(t[a], t[b]) && m->image(t[a], t[b]);
+      if(!t_symmetric)
+        continue;
+      // the segments of s whose orbit (the segment and its image) meets t
+      const Site_* shared[3];
+      int n_shared = 0;
+      for(int a = 0; a < 3; ++a) {
+        if(s[a].is_point)
+          continue;
+        for(int b = 0; b < 3; ++b)
+          if(t[b] == s[a] || m->image(s[a], t[b])) {
+            shared[n_shared++] = &s[a];
+            break;
+          }
+      }
+      for(int a = 0; a < n_shared; ++a)
+        for(int b = a + 1; b < n_shared; ++b)
+          if(!Mirror::collinear(*shared[a], *shared[b]) && !m->on_image_line(*shared[a], *shared[b]))
+            return true;
+    }
+  return false;
+}
 
 /// The function objects of the concept `ProgressiveMedialAxisTraits_2`,
 /// written once on top of the primitives of a model `Model` (static member
@@ -951,8 +1146,9 @@ public:
     std::size_t mpfr_comparisons = 0;          ///< ... by MPFR intervals
     std::size_t rational_comparisons = 0;      ///< ... decided in exact one-root numbers
     std::size_t exact_comparisons = 0;         ///< ... decided in nested-root numbers
-    std::size_t exact_ties = 0;                ///< comparisons that found two times equal (one-root or nested)
+    std::size_t exact_ties = 0;                ///< comparisons that found two times equal (one-root, nested or mirror)
     std::size_t small_rational_overflows = 0;  ///< computations in 128-bit rationals redone in GMP rationals (a result overflowed)
+    std::size_t mirror_ties = 0;               ///< ties found equal because one triple mirrors the other across the separator (mirror_tie())
 
     /// Adds the counts of `b - a` (what another thread counted between two readings).
     void add_difference(const Filter_statistics& b, const Filter_statistics& a)
@@ -970,6 +1166,7 @@ public:
       exact_comparisons += b.exact_comparisons - a.exact_comparisons;
       exact_ties += b.exact_ties - a.exact_ties;
       small_rational_overflows += b.small_rational_overflows - a.small_rational_overflows;
+      mirror_ties += b.mirror_ties - a.mirror_ties;
     }
   };
   static Filter_statistics& filter_statistics()
@@ -1127,15 +1324,32 @@ private:
       }, a.short_coordinates() && b.short_coordinates());
     if(decided)
       return *decided;
+    // a symmetric pair: equal without algebra
+    if(a.kind_ == b.kind_ &&
+       (a.kind_ == Progressive_medial_axes::internal::TIME_SWITCH || a.kind_ == Progressive_medial_axes::internal::TIME_VANISH) &&
+       a.c_ == b.c_ && Progressive_medial_axes::internal::mirror_tie(a.c_, a.s_, b.s_)) {
+      ++filter_statistics().mirror_ties;
+#ifdef CGAL_PMA2_CHECK_MIRROR_TIES
+      // for the tests only (engine.cmake): each such tie confirmed by algebra
+      if(nested_sign(a, b) != ZERO)
+        throw std::logic_error("compare_times: a tie by symmetry (mirror_tie) that the nested-root numbers deny");
+#endif
+      return tie(a, b, EQUAL);
+    }
     ++filter_statistics().exact_comparisons;
-    const Sign sign = with_nested_numbers(a.short_coordinates() && b.short_coordinates(), [&](auto number) {
+    return tie(a, b, Comparison_result(int(nested_sign(a, b))));
+  }
+
+  // The sign of a - b in nested-root numbers.
+  static Sign nested_sign(const Event_time_2& a, const Event_time_2& b)
+  {
+    return with_nested_numbers(a.short_coordinates() && b.short_coordinates(), [&](auto number) {
       decltype(number) ta, tb;
       const bool ok = a.template nested<CK>(ta) && b.template nested<CK>(tb);
       CGAL_assertion(ok);
       CGAL_USE(ok);
       return sign_of_difference(ta, tb);
     });
-    return tie(a, b, Comparison_result(int(sign)));
   }
 
   // Remembers that a and b are equal, so that comparing them again is immediate.

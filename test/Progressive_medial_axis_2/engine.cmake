@@ -12,9 +12,11 @@ add_test(NAME oracle_degenerate COMMAND test_medial_axis_oracle --only degenerat
 # The fallbacks of the exact stages from 128-bit to GMP rationals inside real
 # merges (the one-root and nested-root numbers redone in Gmpq where a result
 # overflows): no test shape overflows 128 bits, so in this build the 128-bit
-# rationals overflow at 40 bits.
+# rationals overflow at 40 bits.  This build also confirms each tie decided
+# by symmetry (mirror_tie()) in nested-root numbers, and fails if one is not.
 pma_add_test_program(test_medial_axis_oracle_gmp_fallback SOURCE test_medial_axis_oracle.cpp)
-target_compile_definitions(test_medial_axis_oracle_gmp_fallback PRIVATE CGAL_PMA2_SMALL_RATIONAL_TEST_BITS=40)
+target_compile_definitions(test_medial_axis_oracle_gmp_fallback PRIVATE CGAL_PMA2_SMALL_RATIONAL_TEST_BITS=40
+                           CGAL_PMA2_CHECK_MIRROR_TIES)
 add_test(NAME oracle_degenerate_gmp_fallback COMMAND test_medial_axis_oracle_gmp_fallback --only degenerate)
 # The double-precision model: its promise (the exact topology, merges with
 # uncertain decisions redone exactly) on the data and degenerate shapes too.
