@@ -528,6 +528,13 @@ int circle_sss(const Site_nt<NT>& s1, const Site_nt<NT>& s2, const Site_nt<NT>& 
 /// no such disk exists, -1 when the number type cannot decide which.
 /// `rel` carries the exact symbolic relations between the sites (shared
 /// endpoints, flat joins), which select the degenerate constructions.
+/// The construction must stay symmetric: the disk of the mirror image of a
+/// triple (in the reversed order, each segment reversed) is the mirror image
+/// of its disk, and the centre is at signed distance +r from the line of each
+/// segment.  The filtered traits decide ties by symmetry on that ground
+/// (mirror_tie() in Progressive_medial_axis_traits_2.h): no choice between
+/// candidate circles may depend on the order of coordinates or indices.
+/// The test build with CGAL_PMA2_CHECK_MIRROR_TIES checks every such tie.
 template <class NT>
 int medial_circle_decided(const Site_nt<NT> s[3], const Triple_relations& rel, Circle_nt<NT>& c)
 {
