@@ -1148,7 +1148,7 @@ public:
     std::size_t exact_comparisons = 0;         ///< ... decided in nested-root numbers
     std::size_t exact_ties = 0;                ///< comparisons that found two times equal (one-root, nested or mirror)
     std::size_t small_rational_overflows = 0;  ///< computations in 128-bit rationals redone in GMP rationals (a result overflowed)
-    std::size_t mirror_ties = 0;               ///< ties found equal because one triple mirrors the other across the separator (mirror_tie())
+    std::size_t mirror_ties = 0;               ///< ties found equal by a symmetry, without nested-root numbers (mirror_tie())
 
     /// Adds the counts of `b - a` (what another thread counted between two readings).
     void add_difference(const Filter_statistics& b, const Filter_statistics& a)
