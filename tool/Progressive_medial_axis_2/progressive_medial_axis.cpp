@@ -1095,12 +1095,22 @@ int main(int argc, char** argv)
   mallopt(M_TOP_PAD, 16 << 20);
   mallopt(M_TRIM_THRESHOLD, 256 << 20);
   // Setting these also froze the size above which glibc maps each block
-  // afresh (128 KB; it would otherwise rise as large blocks are freed).
-  // When the axis is analysed afterwards, raise it to 32 MB, so that the
-  // analysis reuses the pages the axis left instead of faulting in new
-  // ones: 10% to 15% of the analysis on real outlines, for a higher peak
-  // (RESULTS.md, "Significance, pruning and centerline, fourth session").
-  // Not for the axis alone: its peak on a 100,000-hole plate grows by 25%.
+  // afresh (128 KB; it would otherwise rise as large blocks are freed, up
+  // to 32 MB).  Freeze it at 32 MB: the blocks of one part, one polygon or
+  // one stage then reuse the pages that earlier ones freed in the heaps,
+  // instead of mapping new pages, which the kernel zeroes and faults in one
+  // by one, and unmapping them, which flushes the other CPU's TLB
+  // (c1m_CHN_0 0.71 -> 0.61 s, c1m_DEU_0 0.46 -> 0.39 s, the same peak on
+  // syn_plate100k: RESULTS.md, "Blocks above 128 KB from the heaps (issues
+  // 9 and 12)").  A large one-shot still gives the free pages back
+  // (release_memory_of_large_one_shots()).  Set for every run in the
+  // fourth session, when a one-shot did not give them back, it had raised
+  // the plate's peak by 25%.
+  mallopt(M_MMAP_THRESHOLD, 32 << 20);
+  // When the axis is analysed afterwards, the analysis reuses the pages the
+  // axis left instead of faulting in new ones: 10% to 15% of the analysis
+  // on real outlines (RESULTS.md, "Significance, pruning and centerline,
+  // fourth session").
   // glibc maps blocks above 32 MB afresh all the same, unless the main
   // heap maps none: the arrays of the analysis of a plate of 100,000 holes
   // are larger, and their pages are then reused too, for the same peak
@@ -1112,7 +1122,6 @@ int main(int argc, char** argv)
   // allocates on this thread (RESULTS.md, "The analysis's share (issue 14),
   // eighteenth session").
   if(o.analysed()) {
-    mallopt(M_MMAP_THRESHOLD, 32 << 20);
     mallopt(M_MMAP_MAX, 0);
     mallopt(M_ARENA_MAX, 1);
     CGAL::Progressive_medial_axes::internal::release_memory_of_large_one_shots() = false;
