@@ -102,6 +102,14 @@ struct Exact_orientation {
   }
 };
 
+/// Whether the segments u and v lie on one line (exact predicates of `K`).
+template <class K, class Site_>
+bool on_one_line(const Site_& u, const Site_& v)
+{
+  const Exact_orientation<K> orientation;
+  return orientation(u.p, u.q, v.p) == COLLINEAR && orientation(u.p, u.q, v.q) == COLLINEAR;
+}
+
 /// Exact symbolic relations of a triple, from exact predicates of `K`.
 template <class K, class Site_>
 Triple_relations triple_relations(const Site_ s[3])
@@ -200,7 +208,7 @@ bool refine_relations(const Site_ s[3], const Site_* separator, Triple_relations
         found = found || rel.same_direction[i][j];
       }
     }
-    if(separator != nullptr && collinear(separator->p, separator->q, s[i].p) && collinear(separator->p, separator->q, s[i].q))
+    if(separator != nullptr && on_one_line<K>(*separator, s[i]))
       rel.separator_on_line = found = true;
   }
   return found;
@@ -444,14 +452,6 @@ public:
     return on_line(a, b, xy(v.p)) && on_line(a, b, xy(v.q));
   }
 
-  /// Whether the segments u and v lie on one line.
-  template <class Site_>
-  static bool collinear(const Site_& u, const Site_& v)
-  {
-    const Xy a = xy(u.p), b = xy(u.q);
-    return on_line(a, b, xy(v.p)) && on_line(a, b, xy(v.q));
-  }
-
 private:
   static Xy xy(const Point& p)
   {
@@ -474,11 +474,11 @@ private:
 
 /// The mirror that swaps two segments of the triple `s`, i and j, that are
 /// not on one line, or false.
-template <class Site_>
+template <class K, class Site_>
 std::optional<Exact_mirror<typename Site_::Point_2> > swapping_mirror(const Site_* s, int i, int j)
 {
   typedef Exact_mirror<typename Site_::Point_2> Mirror;
-  if(s[i].is_point || s[j].is_point || s[i] == s[j] || Mirror::collinear(s[i], s[j]))
+  if(s[i].is_point || s[j].is_point || s[i] == s[j] || on_one_line<K>(s[i], s[j]))
     return std::nullopt;
   // (segments not on one line: one of the two pairs of ends is two points)
   const Mirror m = s[i].q != s[j].p ? Mirror(s[i].q, s[j].p) : Mirror(s[i].p, s[j].q);
@@ -511,8 +511,9 @@ std::optional<Exact_mirror<typename Site_::Point_2> > swapping_mirror(const Site
 /// is symmetric about a diagonal of the triangulation and whose dot is a
 /// rounded square, FreeMono's strokes with their round ends, regular
 /// polygons, where many segments touch one circle.  The nested-root stage
-/// decided them by algebra, at most of their time.
-template <class Site_>
+/// decided them by algebra, at most of their time.  `K` decides
+/// collinearity exactly.
+template <class K, class Site_>
 bool mirror_tie(const Site_& line, const Site_* s, const Site_* t)
 {
   typedef typename Site_::Point_2 Point;
@@ -555,20 +556,20 @@ bool mirror_tie(const Site_& line, const Site_* s, const Site_* t)
       for(int j = 0; j < 3; ++j) {
         if(i == j || s[i].is_point != s[j].is_point || s[i] == s[j])
           continue;
-        if(m.image(s[i], s[j]) && (s[i].is_point || !Mirror::collinear(s[i], s[j])))
+        if(m.image(s[i], s[j]) && (s[i].is_point || !on_one_line<K>(s[i], s[j])))
           return true;
       }
   }
   // 2.
   for(int i = 0; i < 3; ++i)
     for(int j = i + 1; j < 3; ++j) {
-      const std::optional<Mirror> m = swapping_mirror(s, i, j);
+      const std::optional<Mirror> m = swapping_mirror<K>(s, i, j);
       if(!m)
         continue;
       bool t_symmetric = false;
       for(int a = 0; a < 3 && !t_symmetric; ++a)
         for(int b = a + 1; b < 3 && !t_symmetric; ++b)
-          t_symmetric = !t[a].is_point && !t[b].is_point && !Mirror::collinear(t[a], t[b]) && m->image(t[a], t[b]);
+          t_symmetric = !t[a].is_point && !t[b].is_point && !on_one_line<K>(t[a], t[b]) && m->image(t[a], t[b]);
       if(!t_symmetric)
         continue;
       // the segments of s whose orbit (the segment and its image) meets t
@@ -585,7 +586,7 @@ bool mirror_tie(const Site_& line, const Site_* s, const Site_* t)
       }
       for(int a = 0; a < n_shared; ++a)
         for(int b = a + 1; b < n_shared; ++b)
-          if(!Mirror::collinear(*shared[a], *shared[b]) && !m->on_image_line(*shared[a], *shared[b]))
+          if(!on_one_line<K>(*shared[a], *shared[b]) && !m->on_image_line(*shared[a], *shared[b]))
             return true;
     }
   return false;
@@ -1327,7 +1328,7 @@ private:
     // a symmetric pair: equal without algebra
     if(a.kind_ == b.kind_ &&
        (a.kind_ == Progressive_medial_axes::internal::TIME_SWITCH || a.kind_ == Progressive_medial_axes::internal::TIME_VANISH) &&
-       a.c_ == b.c_ && Progressive_medial_axes::internal::mirror_tie(a.c_, a.s_, b.s_)) {
+       a.c_ == b.c_ && Progressive_medial_axes::internal::mirror_tie<CK>(a.c_, a.s_, b.s_)) {
       ++filter_statistics().mirror_ties;
 #ifdef CGAL_PMA2_CHECK_MIRROR_TIES
       // for the tests only (engine.cmake): each such tie confirmed by algebra
