@@ -171,9 +171,9 @@ bool flat_vertex_swap(const Site_ s[3], const Site_ t[3])
   for(int i = 0; i < 3; ++i) {
     const Site_& x = other[i];
     if(&x == &S) continue;
-    if(!x.is_point && ((x.p == P.p && S.q == P.p) || (x.q == P.p && S.p == P.p)) && on_line(x.p) && on_line(x.q))
+    if(!x.is_point && ((x.p == P.p && S.q == P.p) || (x.q == P.p && S.p == P.p)) && on_one_line<K>(S, x))
       flat = true;
-    else if(x.is_point ? on_line(x.p) : (x.p == P.p || x.q == P.p || (on_line(x.p) && on_line(x.q))))
+    else if(x.is_point ? on_line(x.p) : (x.p == P.p || x.q == P.p || on_one_line<K>(S, x)))
       clear = false;
   }
   return flat && clear;
