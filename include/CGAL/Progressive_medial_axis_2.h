@@ -24,6 +24,7 @@
 #include <CGAL/Progressive_medial_axis_2/internal/Region_growing.h>
 #include <CGAL/Progressive_medial_axis_2/internal/Boundary_evolution.h>
 #include <CGAL/Progressive_medial_axis_2/internal/Divide_and_conquer.h>
+#include <CGAL/Progressive_medial_axis_2/internal/Split_triangulation.h>
 
 #include <CGAL/Polygon_2.h>
 #include <CGAL/Polygon_with_holes_2.h>
@@ -510,22 +511,41 @@ one_shot_medial_axis(const std::vector<std::vector<typename Traits::Kernel::Poin
   Progressive_medial_axis_statistics stats;
   // (on the heap, freed as soon as the triangles are read)
   auto triangulation = std::make_unique<Ring_triangulation<Kernel> >();
+  // a large polygon on two threads or more: triangulated in two sides at
+  // once where a chord cuts it (Split_triangulation.h)
+  std::unique_ptr<Split_triangulation<Kernel> > split;
   auto t0 = std::chrono::steady_clock::now();
-  if(check == CHECK_INPUT) {
-    bool overlap = false;
+  bool overlap = false;
 #ifdef CGAL_PMA2_USE_TBB
+  {
+    std::size_t vertices = 0;
+    for(const auto& ring : rings) vertices += ring.size();
+    const bool parallel =
+      std::is_floating_point<typename Kernel::FT>::value && tbb::this_task_arena::max_concurrency() > 1;
     // The validation (a sweep) and the Delaunay triangulation of the points
     // (which any finite points have) run at the same time; the constraints
     // wait for a valid polygon.  (Small polygons stay on this thread.)
-    std::size_t vertices = 0;
-    for(const auto& ring : rings) vertices += ring.size();
-    if(std::is_floating_point<typename Kernel::FT>::value && (vertices >= min_overlap_vertices || tbb_running()) &&
-       tbb::this_task_arena::max_concurrency() > 1) {
-      overlap = true;
+    overlap = check == CHECK_INPUT && parallel && (vertices >= min_overlap_vertices || tbb_running());
+    if(parallel && vertices >= split_triangulation_min_vertices().load(std::memory_order_relaxed))
+      split = std::make_unique<Split_triangulation<Kernel> >();
+    if(overlap || split)
       for(const auto& ring : rings)
         for(const auto& p : ring)
-          if(!std::isfinite(CGAL::to_double(p.x())) || !std::isfinite(CGAL::to_double(p.y()))) overlap = false;
-    }
+          if(!std::isfinite(CGAL::to_double(p.x())) || !std::isfinite(CGAL::to_double(p.y()))) {
+            overlap = false;
+            split.reset();
+          }
+  }
+#endif
+  // the split's phase 1 (the chord, then both sides' points), or nothing
+  auto split_points = [&] {
+    if(split && split->find_chord(rings))
+      split->insert_points(rings);
+    else
+      split.reset();
+  };
+  if(check == CHECK_INPUT) {
+#ifdef CGAL_PMA2_USE_TBB
     if(overlap) {
       std::exception_ptr invalid;
       tbb::parallel_invoke(
@@ -539,7 +559,9 @@ one_shot_medial_axis(const std::vector<std::vector<typename Traits::Kernel::Poin
         },
         [&] {
           const auto t1 = std::chrono::steady_clock::now();
-          triangulation->insert_points(rings);
+          split_points();
+          if(!split)
+            triangulation->insert_points(rings);
           stats.overlapped_seconds = seconds_since(t1);
         });
       if(invalid)
@@ -551,17 +573,30 @@ one_shot_medial_axis(const std::vector<std::vector<typename Traits::Kernel::Poin
       stats.validation_seconds = seconds_since(t0);
     }
   }
+  double split_seconds = 0;   // the split's phase 1 where it did not run beside the validation
+  if(split && !overlap) {
+    t0 = std::chrono::steady_clock::now();
+    split_points();
+    split_seconds = seconds_since(t0);
+  }
   auto data = std::make_shared<Data>();
   set_points(*data, rings, traits.orientation_2_object());
   stats.input_vertices = data->points.size();
   stats.holes = rings.size() - 1;
 
   t0 = std::chrono::steady_clock::now();
-  std::vector<Triangle> triangles = triangulation->finish(*data);
+  std::vector<Triangle> triangles;
+  if(split && split->finish(*data, triangles)) {
+    stats.split_triangulations = 1;
+    stats.triangulation_parallel_seconds = split->parallel_seconds();
+  } else {   // (where the sides could not be finished, the whole polygon from its points)
+    triangles = triangulation->finish(*data);
+  }
+  split.reset();
   triangulation.reset();
   release_free_memory(data->points.size());
   stats.triangles = triangles.size();
-  stats.triangulation_seconds = stats.overlapped_seconds + seconds_since(t0);
+  stats.triangulation_seconds = stats.overlapped_seconds + split_seconds + seconds_since(t0);
 
   t0 = std::chrono::steady_clock::now();
   Engine engine(*data, traits);

@@ -96,6 +96,9 @@ double boundary_distance(const std::vector<std::vector<std::pair<double, double>
 
 // The driver of the progressive runs (--driver region|boundary).
 CGAL::Progressive_medial_axis_driver g_driver = CGAL::REGION_GROWING;
+// one-shots whose triangulation was split along a chord (main() lowers the
+// size from which it is, so that the random polygons take that path)
+std::size_t g_split_one_shots = 0;
 
 struct Options {
   bool quick = false;
@@ -384,6 +387,7 @@ bool run_polygon(Checker<Traits>& checker, const Rings& rings, const std::string
                       (probe_limit ? ", probed " + std::to_string(probe_limit) + " triangles a part" : ""),
                     true, what, rings);
     CHECK(stats.anomalies == 0, what << ": " << stats.anomalies << " forced events in the one-shot");
+    g_split_one_shots += stats.split_triangulations;
   }
   return pma_test::failures() == before;
 }
@@ -1112,6 +1116,14 @@ int run_all(const Options& o)
   if(wanted("fine")) fine_tests(checker, o);
   if(wanted("touching")) touching_tests(checker, o);
   if(wanted("union")) union_tests(checker, o);
+  // the split triangulation runs where a one-shot has two threads or more,
+  // on double coordinates; the random polygons have chords
+  std::cout << g_split_one_shots << " one-shots triangulated in two sides\n";
+#ifdef CGAL_PMA2_USE_TBB
+  if(std::is_floating_point<typename Traits::FT>::value && tbb::this_task_arena::max_concurrency() > 1 &&
+     g_driver == CGAL::REGION_GROWING && (wanted("random") || wanted("holes")))
+    CHECK(g_split_one_shots > 0, "no one-shot triangulated its polygon in two sides");
+#endif
 #ifdef CGAL_PMA2_SMALL_RATIONAL_TEST_BITS
   // this build's 128-bit rationals overflow early (engine.cmake): the
   // comparisons above tested the fallbacks to GMP rationals only if some ran
@@ -1148,6 +1160,9 @@ int main(int argc, char** argv)
     }
     else { std::cerr << "unknown argument " << a << "\n"; return 2; }
   }
+  // (every one-shot of 16 vertices or more on two threads tries to split
+  // its triangulation, not only those of 32,768 or more)
+  CGAL::Progressive_medial_axes::internal::split_triangulation_min_vertices() = 16;
   if(o.traits == "epick") return run_all<CGAL::Progressive_medial_axis_traits_2<CGAL::Simple_cartesian<double> > >(o);
   if(o.traits == "exact") return run_all<CGAL::Progressive_medial_axis_traits_2<CGAL::Simple_cartesian<CORE::Expr> > >(o);
   return run_all<CGAL::Progressive_medial_axis_traits_2<CGAL::Epick> >(o);

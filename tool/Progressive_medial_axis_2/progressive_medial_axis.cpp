@@ -402,6 +402,8 @@ void add_statistics(CGAL::Progressive_medial_axis_statistics& s, const CGAL::Pro
   s.validation_seconds += t.validation_seconds;
   s.triangulation_seconds += t.triangulation_seconds;
   s.overlapped_seconds += t.overlapped_seconds;
+  s.split_triangulations += t.split_triangulations;
+  s.triangulation_parallel_seconds += t.triangulation_parallel_seconds;
   s.merge_seconds += t.merge_seconds;
   s.switches += t.switches;
   s.vanishings += t.vanishings;
@@ -1044,7 +1046,8 @@ int run(const Options& o)
       // the task tree of the one-shot divide and conquer: its work (every
       // task, summed) and span (the longest chain of dependent tasks)
       // (the polygons are independent: the span is that of the longest one)
-      const double work = read_seconds + s.validation_seconds + s.triangulation_seconds + s.parts_seconds_sum + s.join_seconds;
+      const double work = read_seconds + s.validation_seconds + s.triangulation_seconds +
+                          s.triangulation_parallel_seconds + s.parts_seconds_sum + s.join_seconds;
       double span = 0;
       for(const Job& job : jobs) {
         const auto& t = job.stats;
@@ -1056,6 +1059,7 @@ int run(const Options& o)
                   "time_span %.6f\n",
                   s.parts, s.parts_seconds_sum, s.parts_seconds_max, s.join_seconds, work, read_seconds + span);
       std::printf("oneshot_boundary_evolution %zu\n", s.boundary_evolution_one_shots);
+      std::printf("triangulation_split %zu\n", s.split_triangulations);
     }
     if(!o.union_with.empty())
       std::printf("time_union_merge %.6f\ntime_union_join %.6f\nunion_shared_edges %zu\nunion_chains %zu\n",

@@ -45,11 +45,13 @@ struct Progressive_medial_axis_statistics {
   std::size_t redone_merges = 0;   ///< merges of the double model redone with exact decisions after an anomaly
   std::size_t max_queue = 0;       ///< n_v: the largest priority queue of any merge
   // The task tree of a one-shot divide and conquer (`CGAL::medial_axis_2()`):
-  // its work is validation + triangulation + `parts_seconds_sum` +
-  // `join_seconds`, its span (the longest chain of dependent tasks)
-  // validation + triangulation - min(validation, `overlapped_seconds`) +
-  // `parts_seconds_max` + `join_seconds`.
+  // its work is validation + triangulation + `triangulation_parallel_seconds`
+  // + `parts_seconds_sum` + `join_seconds`, its span (the longest chain of
+  // dependent tasks) validation + triangulation - min(validation,
+  // `overlapped_seconds`) + `parts_seconds_max` + `join_seconds`.
   double overlapped_seconds = 0;   ///< one shot: the part of the triangulation that ran while another thread validated the input (the points' Delaunay triangulation; 0 when sequential)
+  std::size_t split_triangulations = 0; ///< one shot: 1 where the polygon was triangulated in two sides at once, cut along a chord of its outer ring (large polygons, two threads or more), else 0
+  double triangulation_parallel_seconds = 0; ///< one shot: the time the two sides' triangulations ran beside each other (their summed times less the wall time; 0 unless split)
   std::size_t parts = 0;           ///< one shot: parts of the divide and conquer
   double parts_seconds_sum = 0;    ///< one shot: the tasks of all parts (built independently), summed
   double parts_seconds_max = 0;    ///< one shot: the longest task of a part

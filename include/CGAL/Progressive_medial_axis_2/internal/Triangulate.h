@@ -98,15 +98,161 @@ public:
     inserted_ = true;
   }
 
+  /// Phase 1 from points already paired with their indices.
+  void insert_points(std::vector<std::pair<typename K::Point_2, int> >& points)
+  {
+    cdt_.insert(points.begin(), points.end());
+    inserted_ = true;
+  }
+
   /// Phase 2 (and phase 1 from `data` if not done): the triangles inside the
   /// valid polygon of `data`, whose points are those of phase 1.
   template <class Data>
   std::vector<Triangle> finish(Data& data);
 
+  /// Phase 2 for a polygon whose points are distinct and lie inside no
+  /// edge (used for the sides of a split triangulation,
+  /// Split_triangulation.h), in two steps.  First its edges: i -> `next[i]`
+  /// (-1: i is not a point of it), its points those of phase 1 (done).
+  /// Returns the number of triangles inside, or -1 where two points of
+  /// phase 1 are at one place or an edge passes through a point (which
+  /// finish() handles).
+  int constrain_plain(const std::vector<int>& next);
+  /// Then the triangles, into `out`, their indices (and neighbours) from
+  /// `offset` on.
+  void write_plain(Triangle* out, int offset)
+  {
+    write_inside(out, offset, [](Face_handle f, int i) { return f->vertex(i)->info(); });
+  }
+
 private:
+  typedef typename CDT::Face_handle Face_handle;
+  // Constrains the edges i -> next(i) of the n points (next(i) < 0: no
+  // edge); the indices i of those that were not edges of the Delaunay
+  // triangulation already.
+  template <class Next>
+  std::vector<std::size_t> constrain(const std::vector<Vertex_handle>& handle, std::size_t n, const Next& next);
+  // The nesting level of every face: 0 outside, 1 inside the outer ring, 2
+  // in a hole...; the faces inside (odd levels) get -2 - their index among
+  // them.  Returns their number.
+  int number_inside();
+  // The triangles inside, into `out` (numbered from `offset`); `vertex(f,
+  // i)` names the vertex i of face f.
+  template <class Vertex_name>
+  void write_inside(Triangle* out, int offset, const Vertex_name& vertex);
+
   CDT cdt_;
   bool inserted_ = false;
 };
+
+template <class Kernel>
+template <class Next>
+std::vector<std::size_t> Ring_triangulation<Kernel>::constrain(const std::vector<Vertex_handle>& handle,
+                                                               std::size_t n, const Next& next)
+{
+  // Most edges of a polygon are edges of the Delaunay triangulation of its
+  // points already: those are marked constrained on both sides here, which
+  // is all that CDT::insert_constraint() would do for them, without its
+  // work stack (two blocks of the heap for each call).  The others are
+  // inserted, and looked at by the caller for points they pass through.
+  // (On a 128,000-vertex outline the constraints took 11 ms instead of 26,
+  // the search for such points 0.2 ms instead of 12.)
+  CDT& cdt = cdt_;
+  std::vector<std::size_t> inserted;
+  for(std::size_t i = 0; i < n; ++i) {
+    const int j = next(i);
+    if(j < 0) continue;
+    const Vertex_handle a = handle[i], b = handle[std::size_t(j)];
+    Face_handle f;
+    int e;
+    if(cdt.dimension() == 2 && cdt.is_edge(a, b, f, e)) {
+      f->set_constraint(e, true);
+      f->neighbor(e)->set_constraint(cdt.mirror_index(f, e), true);
+    } else {
+      cdt.insert_constraint(a, b);
+      inserted.push_back(i);
+    }
+  }
+  return inserted;
+}
+
+template <class Kernel>
+int Ring_triangulation<Kernel>::number_inside()
+{
+  CDT& cdt = cdt_;
+  for(auto f = cdt.all_faces_begin(); f != cdt.all_faces_end(); ++f) f->info() = -1;
+  // (One stack, reused by every region: a queue allocated for each region
+  // made the flood of a plate of 100,000 holes take 82 ms instead of 73.)
+  std::vector<Face_handle> border, current, stack;
+  auto flood = [&](Face_handle start, int level) {
+    if(start->info() != -1) return;
+    start->info() = level;
+    stack.push_back(start);
+    while(!stack.empty()) {
+      const auto f = stack.back();
+      stack.pop_back();
+      for(int i = 0; i < 3; ++i) {
+        const auto n = f->neighbor(i);
+        if(n->info() != -1) continue;
+        if(f->is_constrained(i)) {
+          border.push_back(n);
+        } else {
+          n->info() = level;
+          stack.push_back(n);
+        }
+      }
+    }
+  };
+  border.push_back(cdt.infinite_face());
+  for(int level = 0; !border.empty(); ++level) {
+    current.swap(border);
+    border.clear();
+    for(const auto f : current) flood(f, level);
+  }
+  int count = 0;
+  for(auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f) {
+    if(f->info() % 2 == 1) {
+      f->info() = -2 - count;   // remember the triangle's index
+      ++count;
+    }
+  }
+  return count;
+}
+
+template <class Kernel>
+template <class Vertex_name>
+void Ring_triangulation<Kernel>::write_inside(Triangle* out, int offset, const Vertex_name& vertex)
+{
+  CDT& cdt = cdt_;
+  for(auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f) {
+    if(f->info() > -2) continue;
+    Triangle& t = out[-2 - f->info()];
+    for(int i = 0; i < 3; ++i) {
+      t.v[i] = vertex(f, i);
+      auto n = f->neighbor(i);
+      bool inside = !cdt.is_infinite(n) && n->info() <= -2;
+      t.nbr[i] = (inside && !cdt.is_constrained(std::make_pair(f, i))) ? offset - 2 - n->info() : -1;
+    }
+  }
+}
+
+template <class Kernel>
+int Ring_triangulation<Kernel>::constrain_plain(const std::vector<int>& next)
+{
+  CGAL_precondition(inserted_);
+  CDT& cdt = cdt_;
+  const std::size_t n = next.size();
+  std::vector<Vertex_handle> handle(n);
+  std::size_t in = 0;
+  for(std::size_t i = 0; i < n; ++i) in += next[i] >= 0 ? 1 : 0;
+  if(cdt.number_of_vertices() != in)   // points at one place
+    return -1;
+  for(auto v = cdt.finite_vertices_begin(); v != cdt.finite_vertices_end(); ++v) handle[std::size_t(v->info())] = v;
+  for(const std::size_t i : constrain(handle, n, [&](std::size_t i) { return next[i]; }))
+    if(!cdt.is_edge(handle[i], handle[std::size_t(next[i])]))   // an edge through a point
+      return -1;
+  return number_inside();
+}
 
 template <class Kernel>
 template <class Data>
@@ -135,28 +281,8 @@ std::vector<Triangle> Ring_triangulation<Kernel>::finish(Data& data)
       if(at.empty()) at.push_back(handle[i]->info());
       at.push_back(int(i));
     }
-  // The constraints.  Most edges of a polygon are edges of the Delaunay
-  // triangulation of its points already: those are marked constrained on
-  // both sides here, which is all that CDT::insert_constraint() would do for
-  // them, without its work stack (two blocks of the heap for each call).
-  // The others are inserted, and looked at below for points they pass
-  // through.  (On a 128,000-vertex outline the constraints took 11 ms
-  // instead of 26, the search for such points 0.2 ms instead of 12.)
   const std::size_t n = points.size();
-  std::vector<std::size_t> inserted;
-  for(std::size_t i = 0; i < n; ++i) {
-    if(info[i].next < 0) continue;
-    const Vertex_handle a = handle[i], b = handle[std::size_t(info[i].next)];
-    typename CDT::Face_handle f;
-    int e;
-    if(cdt.dimension() == 2 && cdt.is_edge(a, b, f, e)) {
-      f->set_constraint(e, true);
-      f->neighbor(e)->set_constraint(cdt.mirror_index(f, e), true);
-    } else {
-      cdt.insert_constraint(a, b);
-      inserted.push_back(i);
-    }
-  }
+  const std::vector<std::size_t> inserted = constrain(handle, n, [&](std::size_t i) { return info[i].next; });
 
   // T's: an edge whose constraint passes through other points
   const K k;
@@ -206,46 +332,7 @@ std::vector<Triangle> Ring_triangulation<Kernel>::finish(Data& data)
       return k.orientation_2_object()(TK::point(p), TK::point(q), TK::point(r));
     });
 
-  // Nesting level of every face: 0 outside, 1 inside the outer ring, 2 in a hole...
-  for(auto f = cdt.all_faces_begin(); f != cdt.all_faces_end(); ++f) f->info() = -1;
-  // (One stack, reused by every region: a queue allocated for each region
-  // made the flood of a plate of 100,000 holes take 82 ms instead of 73.)
-  std::vector<typename CDT::Face_handle> border, current, stack;
-  auto flood = [&](typename CDT::Face_handle start, int level) {
-    if(start->info() != -1) return;
-    start->info() = level;
-    stack.push_back(start);
-    while(!stack.empty()) {
-      const auto f = stack.back();
-      stack.pop_back();
-      for(int i = 0; i < 3; ++i) {
-        const auto n = f->neighbor(i);
-        if(n->info() != -1) continue;
-        if(f->is_constrained(i)) {
-          border.push_back(n);
-        } else {
-          n->info() = level;
-          stack.push_back(n);
-        }
-      }
-    }
-  };
-  border.push_back(cdt.infinite_face());
-  for(int level = 0; !border.empty(); ++level) {
-    current.swap(border);
-    border.clear();
-    for(const auto f : current) flood(f, level);
-  }
-
-  std::vector<Triangle> tris;
-  int count = 0;
-  for(auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f) {
-    if(f->info() % 2 == 1) {
-      f->info() = -2 - count;   // remember the triangle's index
-      ++count;
-    }
-  }
-  tris.resize(count);
+  const int count = number_inside();
   // The corner of the sector of face f at its vertex i, a place where rings
   // touch: turning clockwise about it, the first constrained edge leads to the
   // successor of that corner (see link_touching_corners()).
@@ -262,16 +349,10 @@ std::vector<Triangle> Ring_triangulation<Kernel>::finish(Data& data)
     CGAL_assertion_msg(false, "no corner for the sector");
     return at.front();
   };
-  for(auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f) {
-    if(f->info() > -2) continue;
-    Triangle& t = tris[-2 - f->info()];
-    for(int i = 0; i < 3; ++i) {
-      t.v[i] = touching.empty() || !touching.count(f->vertex(i)) ? f->vertex(i)->info() : corner(f, i);
-      auto n = f->neighbor(i);
-      bool inside = !cdt.is_infinite(n) && n->info() <= -2;
-      t.nbr[i] = (inside && !cdt.is_constrained(std::make_pair(f, i))) ? -2 - n->info() : -1;
-    }
-  }
+  std::vector<Triangle> tris(static_cast<std::size_t>(count));
+  write_inside(tris.data(), 0, [&](Face_handle f, int i) {
+    return touching.empty() || !touching.count(f->vertex(i)) ? f->vertex(i)->info() : corner(f, i);
+  });
   return tris;
 }
 
