@@ -516,17 +516,20 @@ one_shot_medial_axis(const std::vector<std::vector<typename Traits::Kernel::Poin
   std::unique_ptr<Split_triangulation<Kernel> > split;
   auto t0 = std::chrono::steady_clock::now();
   bool overlap = false;
+  bool has_t = false;   // a point of the polygon lies inside one of its edges
 #ifdef CGAL_PMA2_USE_TBB
   {
     std::size_t vertices = 0;
     for(const auto& ring : rings) vertices += ring.size();
     const bool parallel =
       std::is_floating_point<typename Kernel::FT>::value && tbb::this_task_arena::max_concurrency() > 1;
+    // (the split needs the check's answer on T's, and exact double coordinates)
+    const bool may_split = check == CHECK_INPUT && std::is_same<typename Kernel::FT, double>::value;
     // The validation (a sweep) and the Delaunay triangulation of the points
     // (which any finite points have) run at the same time; the constraints
     // wait for a valid polygon.  (Small polygons stay on this thread.)
     overlap = check == CHECK_INPUT && parallel && (vertices >= min_overlap_vertices || tbb_running());
-    if(parallel && vertices >= split_triangulation_min_vertices().load(std::memory_order_relaxed))
+    if(parallel && may_split && vertices >= split_triangulation_min_vertices().load(std::memory_order_relaxed))
       split = std::make_unique<Split_triangulation<Kernel> >();
     if(overlap || split)
       for(const auto& ring : rings)
@@ -551,7 +554,7 @@ one_shot_medial_axis(const std::vector<std::vector<typename Traits::Kernel::Poin
       tbb::parallel_invoke(
         [&] {
           try {
-            validate_polygon(rings);
+            has_t = validate_and_find_vertices_on_edges(rings);
           } catch(...) {
             invalid = std::current_exception();
           }
@@ -569,10 +572,12 @@ one_shot_medial_axis(const std::vector<std::vector<typename Traits::Kernel::Poin
     }
 #endif
     if(!overlap) {
-      validate_polygon(rings);
+      has_t = validate_and_find_vertices_on_edges(rings);
       stats.validation_seconds = seconds_since(t0);
     }
   }
+  if(has_t)   // (a point in an edge: the whole polygon, see Split_triangulation.h)
+    split.reset();
   double split_seconds = 0;   // the split's phase 1 where it did not run beside the validation
   if(split && !overlap) {
     t0 = std::chrono::steady_clock::now();

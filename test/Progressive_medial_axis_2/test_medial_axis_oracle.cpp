@@ -388,6 +388,11 @@ bool run_polygon(Checker<Traits>& checker, const Rings& rings, const std::string
                     true, what, rings);
     CHECK(stats.anomalies == 0, what << ": " << stats.anomalies << " forced events in the one-shot");
     g_split_one_shots += stats.split_triangulations;
+    // never where a vertex lies inside an edge: its point and its edge could
+    // fall on different sides, unseen by both
+    if(stats.split_triangulations != 0)
+      CHECK(!CGAL::Progressive_medial_axes::internal::validate_and_find_vertices_on_edges(rings),
+            what << ": a polygon with a vertex inside an edge triangulated in two sides");
   }
   return pma_test::failures() == before;
 }

@@ -48,11 +48,13 @@
 // by height, each edge of the side looks at those at its heights).
 //
 // The split is only for polygons whose rings do not touch: where two
-// points are at one place, or a point lies in an edge, the polygon is
-// triangulated whole, as the corners of such places need all their rings.
-// Points at one place are looked for with the chord, beside the check of
-// the polygon (2 to 3 ms on 128,000 points); a point in an edge is found
-// by the sides' triangulations, which are then done in vain.
+// points are at one place, or a point lies in an edge (a "T"), the polygon
+// is triangulated whole, as the corners of such places need all their
+// rings, and a T whose point and edge fall on different sides would go
+// unseen by both.  Points at one place are looked for with the chord (2 to
+// 3 ms on 128,000 points); T's are found by the check of the polygon, both
+// beside the sides' Delaunay triangulations, which are then done in vain.
+// So the one-shot splits only polygons it checks itself (CHECK_INPUT).
 
 #ifndef CGAL_PROGRESSIVE_MEDIAL_AXIS_2_INTERNAL_SPLIT_TRIANGULATION_H
 #define CGAL_PROGRESSIVE_MEDIAL_AXIS_2_INTERNAL_SPLIT_TRIANGULATION_H
@@ -178,6 +180,9 @@ bool Split_triangulation<Kernel>::find_chord(const std::vector<std::vector<Point
   m_ = rings[0].size();
   if(m_ < 16)
     return false;
+  for(const auto& ring : rings)   // (the check of the polygon, running beside this, rejects such rings)
+    if(ring.size() < 3)
+      return false;
   ring_start_.assign(1, 0);
   for(const auto& ring : rings) ring_start_.push_back(ring_start_.back() + ring.size());
   auto at = [&](std::size_t r, std::size_t i) -> Point { return TK::point(rings[r][i]); };
@@ -192,12 +197,19 @@ bool Split_triangulation<Kernel>::find_chord(const std::vector<std::vector<Point
   };
   // whether no edge of any ring crosses or touches the segment pq, but the
   // four edges at its ends i and j (vertices of the outer ring)
+  // (at most 16 n edges looked at in all, for outlines where many pairs
+  // are rejected late)
+  const std::size_t n = ring_start_.back();
+  std::size_t budget = 16 * n;
   auto clear = [&](std::size_t i, std::size_t j, const Point& p, const Point& q) {
     const double xlo = (std::min)(x(p), x(q)), xhi = (std::max)(x(p), x(q));
     const double ylo = (std::min)(y(p), y(q)), yhi = (std::max)(y(p), y(q));
     for(std::size_t r = 0; r < rings.size(); ++r) {
       const std::size_t m = rings[r].size();
       for(std::size_t e = 0; e < m; ++e) {
+        if(budget == 0)
+          return false;
+        --budget;
         const std::size_t f = e + 1 == m ? 0 : e + 1;
         if(r == 0 && (e == i || e == j || f == i || f == j)) continue;
         const Point u = at(r, e), w = at(r, f);
@@ -216,7 +228,7 @@ bool Split_triangulation<Kernel>::find_chord(const std::vector<std::vector<Point
   // (the most even of the chords found, or the first within m/32 of even)
   std::minstd_rand random(std::uint_fast32_t(m_ * 2654435761u + ring_start_.back()));
   std::size_t best = m_;   // how far the best chord's sides are from m/2 vertices each
-  for(int t = 0; t < split_triangulation_tries && best > m_ / 32; ++t) {
+  for(int t = 0; t < split_triangulation_tries && best > m_ / 32 && budget > 0; ++t) {
     const std::size_t i = std::size_t(random()) % m_;
     const std::size_t spread = m_ / 10;
     const std::size_t j = (i + m_ / 2 - spread + std::size_t(random()) % (2 * spread + 1)) % m_;
@@ -254,6 +266,7 @@ bool Split_triangulation<Kernel>::find_chord(const std::vector<std::vector<Point
   std::sort(starts.begin(), starts.end());
   std::vector<char> odd(rings.size(), 0);
   bool on_boundary = false;
+  std::size_t tests = 4 * n;   // (at most: tall edges and many holes would make it quadratic)
   auto count = [&](const Point& u, const Point& w) {
     const bool up = y(u) < y(w);
     const Point& lo = up ? u : w;
@@ -261,13 +274,18 @@ bool Split_triangulation<Kernel>::find_chord(const std::vector<std::vector<Point
     // the starts with lo.y <= y < hi.y
     auto s = std::lower_bound(starts.begin(), starts.end(), std::make_pair(y(lo), std::size_t(0)));
     for(; s != starts.end() && s->first < y(hi); ++s) {
+      if(tests == 0) {
+        on_boundary = true;   // (no split)
+        return;
+      }
+      --tests;
       const Orientation o = orientation(lo, hi, at(s->second, 0));
       if(o == COLLINEAR) on_boundary = true;
       else if(o == LEFT_TURN) odd[s->second] ^= 1;
     }
   };
   if(!starts.empty()) {
-    for(std::size_t e = a_; e != b_; e = after(e)) count(at(0, e), at(0, after(e)));
+    for(std::size_t e = a_; e != b_ && !on_boundary; e = after(e)) count(at(0, e), at(0, after(e)));
     count(at(0, b_), at(0, a_));
   }
   if(on_boundary)
