@@ -122,16 +122,12 @@ public:
   /// times less the wall time of the phases that ran them).
   double parallel_seconds() const { return parallel_seconds_; }
 
-  /// The edge flips that made the joined triangulation Delaunay again.
-  std::size_t flips() const { return flips_; }
-
 private:
   // Lawson's flips from the edge e of triangle t: every diagonal whose
   // triangles' circle holds the opposite vertex is flipped, and the four
   // edges around it looked at again; edges of the polygon never are.
-  // Returns the number of flips.
   template <class Point_2>
-  static std::size_t make_delaunay(const std::vector<Point_2>& points, std::vector<Triangle>& tris, int t, int e);
+  static void make_delaunay(const std::vector<Point_2>& points, std::vector<Triangle>& tris, int t, int e);
 
   template <class F, class G>
   void run_both(const F& f, const G& g)
@@ -168,7 +164,6 @@ private:
   std::vector<std::size_t> ring_start_;
   Ring_triangulation<Kernel> side_[2];
   double parallel_seconds_ = 0;
-  std::size_t flips_ = 0;
 };
 
 template <class Kernel>
@@ -371,19 +366,18 @@ bool Split_triangulation<Kernel>::finish(const Data& data, std::vector<Triangle>
     return false;
   triangles[std::size_t(t0)].nbr[edge[0]] = t1;
   triangles[std::size_t(t1)].nbr[edge[1]] = t0;
-  flips_ = make_delaunay(data.points, triangles, t0, edge[0]);
+  make_delaunay(data.points, triangles, t0, edge[0]);
   out = std::move(triangles);
   return true;
 }
 
 template <class Kernel>
 template <class Point_2>
-std::size_t Split_triangulation<Kernel>::make_delaunay(const std::vector<Point_2>& points, std::vector<Triangle>& tris,
-                                                       int t, int e)
+void Split_triangulation<Kernel>::make_delaunay(const std::vector<Point_2>& points, std::vector<Triangle>& tris, int t,
+                                                int e)
 {
   const auto in_circle = K().side_of_oriented_circle_2_object();
   auto at = [&](int v) -> Point { return TK::point(points[std::size_t(v)]); };
-  std::size_t flips = 0;
   std::vector<std::pair<int, int> > edges(1, std::make_pair(t, e));
   while(!edges.empty()) {
     std::tie(t, e) = edges.back();
@@ -403,13 +397,11 @@ std::size_t Split_triangulation<Kernel>::make_delaunay(const std::vector<Point_2
     U = Triangle{{a, d, c}, {dc, ca, t}};
     if(bd >= 0) tris[std::size_t(bd)].nbr[side_towards(tris, bd, u)] = t;
     if(ca >= 0) tris[std::size_t(ca)].nbr[side_towards(tris, ca, t)] = u;
-    ++flips;
     edges.emplace_back(t, 0);
     edges.emplace_back(t, 2);
     edges.emplace_back(u, 0);
     edges.emplace_back(u, 1);
   }
-  return flips;
 }
 
 } // namespace internal

@@ -94,8 +94,7 @@ public:
     int i = 0;
     for(const auto& ring : rings)
       for(const Point_2& p : ring) pts.emplace_back(TK::point(p), i++);
-    cdt_.insert(pts.begin(), pts.end());
-    inserted_ = true;
+    insert_points(pts);
   }
 
   /// Phase 1 from points already paired with their indices.
@@ -266,7 +265,7 @@ std::vector<Triangle> Ring_triangulation<Kernel>::finish(Data& data)
     pts.reserve(points.size());
     for(std::size_t i = 0; i < points.size(); ++i)
       if(info[i].next >= 0) pts.emplace_back(TK::point(points[i]), int(i));
-    cdt.insert(pts.begin(), pts.end());
+    insert_points(pts);
   }
   std::vector<Vertex_handle> handle(points.size());
   for(auto v = cdt.finite_vertices_begin(); v != cdt.finite_vertices_end(); ++v)
