@@ -294,8 +294,12 @@ template <class Point_2>
 void Split_triangulation<Kernel>::insert_points(const std::vector<std::vector<Point_2> >& rings)
 {
   std::vector<std::pair<Point, int> > points[2];
+  std::size_t holes_points[2] = {0, 0};
+  for(std::size_t r = 1; r < rings.size(); ++r) holes_points[int(side_of_ring_[r])] += rings[r].size();
   for(int s = 0; s < 2; ++s) {
     const std::size_t from = s == 0 ? a_ : b_, to = s == 0 ? b_ : a_;
+    const std::size_t steps = ccw_ ? (to + m_ - from) % m_ : (from + m_ - to) % m_;   // after() from `from` to `to`
+    points[s].reserve(steps + 1 + holes_points[s]);
     for(std::size_t e = from;; e = after(e)) {
       points[s].emplace_back(TK::point(rings[0][e]), int(e));
       if(e == to) break;

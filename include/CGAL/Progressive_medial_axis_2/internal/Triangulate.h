@@ -91,6 +91,9 @@ public:
   void insert_points(const std::vector<std::vector<Point_2> >& rings)
   {
     std::vector<std::pair<typename K::Point_2, int> > pts;
+    std::size_t n = 0;
+    for(const auto& ring : rings) n += ring.size();
+    pts.reserve(n);
     int i = 0;
     for(const auto& ring : rings)
       for(const Point_2& p : ring) pts.emplace_back(TK::point(p), i++);
