@@ -90,6 +90,47 @@ struct Sqrt_hook<CORE::Expr> {
   }
 };
 
+/// The one-root stage's lines of segments with rational end points (the
+/// exact ties of integer grids evaluate the same segments' lines again and
+/// again: on a grid polygon of 47,000 vertices, computing them was half of
+/// that stage's time; RESULTS.md, "The one-root stage's lines").
+template <>
+struct Oriented_line_hook<Small_one_root> {
+  struct Entry {   // (default value: the segment from (0, 0) to (0, 0), unused)
+    static constexpr unsigned max_bits = 10;
+    Small_rational key[4];
+    Line_nt<Small_one_root> value;
+    bool holds(const Small_rational* c) const
+    {
+      return key[0] == c[0] && key[1] == c[1] && key[2] == c[2] && key[3] == c[3];
+    }
+    const Line_nt<Small_one_root>& line() const { return value; }
+    void set(const Small_rational* c, const Line_nt<Small_one_root>& l)
+    {
+      std::copy(c, c + 4, key);
+      value = l;
+    }
+  };
+  static Line_nt<Small_one_root> apply(const Site_nt<Small_one_root>& s)
+  {
+    if(!(s.ax.is_rational() && s.ay.is_rational() && s.bx.is_rational() && s.by.is_rational()))
+      return compute_oriented_line(s);
+    const Small_rational c[4] = {s.ax.a(), s.ay.a(), s.bx.a(), s.by.a()};
+    std::uint64_t h = 0x9e3779b97f4a7c15ull;
+    for(const Small_rational& x : c)   // (the low 64 bits of each)
+      h = mix_hash(mix_hash(h, std::uint64_t(x.numerator())), std::uint64_t(x.denominator()));
+    static thread_local Cache_table<Entry> table;
+    Entry* e = table.at(h);
+    if(e == nullptr)
+      return compute_oriented_line(s);
+    if(e->holds(c))
+      return e->line();
+    const Line_nt<Small_one_root> line = compute_oriented_line(s);
+    table.after_miss(e, h)->set(c, line);
+    return line;
+  }
+};
+
 /// The orientation predicate of kernel K, exact: for a kernel of doubles
 /// (Simple_cartesian<double>), that of Epick on the same points.
 template <class K>
@@ -1673,10 +1714,70 @@ private:
   template <class NT>
   static int disk_nt_decided(const Site_2* s, const Progressive_medial_axes::internal::Triple_relations& rel, Progressive_medial_axes::internal::Circle_nt<NT>& circle)
   {
+    if constexpr(std::is_same<NT, Progressive_medial_axes::internal::Small_one_root>::value &&
+                 std::is_same<typename CK::FT, double>::value)
+      return small_disk(s, rel, circle);
+    else
+      return uncached_disk_nt_decided(s, rel, circle);
+  }
+  template <class NT>
+  static int uncached_disk_nt_decided(const Site_2* s, const Progressive_medial_axes::internal::Triple_relations& rel,
+                                      Progressive_medial_axes::internal::Circle_nt<NT>& circle)
+  {
     Progressive_medial_axes::internal::To_nt_convert<NT> cv;
     Progressive_medial_axes::internal::Site_nt<NT> sn[3] = {Progressive_medial_axes::internal::site_nt<NT>(s[0], cv), Progressive_medial_axes::internal::site_nt<NT>(s[1], cv),
                                          Progressive_medial_axes::internal::site_nt<NT>(s[2], cv)};
     return Progressive_medial_axes::internal::medial_circle_decided(sn, rel, circle);
+  }
+
+  // The disk of a triple in small one-root numbers, kept per thread: on
+  // integer grids, the exact ties compare the disks of the same vertices
+  // again and again (same_disk() at each end of the chain edges of a merge,
+  // then disk() where the vertex is rounded).
+  struct Small_disk_entry {   // (default value: unused)
+    static constexpr unsigned max_bits = 10;
+    bool used = false;
+    bool is_point[3] = {};
+    double coordinates[12] = {};
+    Progressive_medial_axes::internal::Triple_relations rel;
+    int found = 0;
+    Progressive_medial_axes::internal::Circle_nt<Progressive_medial_axes::internal::Small_one_root> circle;
+  };
+  static int small_disk(const Site_2* s, const Progressive_medial_axes::internal::Triple_relations& rel,
+                        Progressive_medial_axes::internal::Circle_nt<Progressive_medial_axes::internal::Small_one_root>& circle)
+  {
+    Small_disk_entry key;
+    std::uint64_t h = 0x9e3779b97f4a7c15ull;
+    for(int i = 0; i < 3; ++i) {
+      key.is_point[i] = s[i].is_point;
+      const double c[4] = {s[i].p.x(), s[i].p.y(), s[i].q.x(), s[i].q.y()};
+      for(int j = 0; j < 4; ++j) {
+        key.coordinates[4 * i + j] = c[j];
+        std::uint64_t b;
+        std::memcpy(&b, &c[j], sizeof b);
+        h = Progressive_medial_axes::internal::mix_hash(h, b);
+      }
+      h = Progressive_medial_axes::internal::mix_hash(h, std::uint64_t(s[i].is_point));
+    }
+    static thread_local Progressive_medial_axes::internal::Cache_table<Small_disk_entry> table;
+    Small_disk_entry* e = table.at(h);
+    // (the relations compared as bytes: equal bytes are equal relations)
+    if(e != nullptr && e->used && std::equal(key.is_point, key.is_point + 3, e->is_point) &&
+       std::equal(key.coordinates, key.coordinates + 12, e->coordinates) &&
+       std::memcmp(&rel, &e->rel, sizeof rel) == 0) {
+      circle = e->circle;
+      return e->found;
+    }
+    const int found = uncached_disk_nt_decided(s, rel, circle);
+    if(e != nullptr) {
+      e = table.after_miss(e, h);
+      *e = key;
+      e->used = true;
+      e->rel = rel;
+      e->found = found;
+      e->circle = circle;
+    }
+    return found;
   }
 };
 

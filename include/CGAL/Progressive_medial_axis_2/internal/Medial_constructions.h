@@ -26,6 +26,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <memory>
+#include <new>
 #include <type_traits>
 #include <vector>
 
@@ -214,63 +215,114 @@ Line_nt<NT> oriented_line(const Site_nt<NT>& s)
   return Oriented_line_hook<NT>::apply(s);
 }
 
-/// The interval stage's lines of segments whose end points are doubles,
-/// kept in a small direct-mapped table per thread (a hit costs a hash and
-/// four comparisons; the line costs an interval square root and division).
-/// The table is zeroed memory from calloc (an entry of zeros is unused: no
-/// segment has length zero).  It starts with 64 entries and grows to 4,096
-/// as misses come (a new table each time, the old entries dropped), so that
-/// a small polygon touches a few pages only: a table of 4,096 entries at
-/// once was a third of the page faults of a polygon of 268 vertices, and
-/// one of 256 (20 KB) still 2% of the first call on a glyph of 14 vertices
-/// (RESULTS.md, "The cold first call of tiny glyphs").
+/// A direct-mapped table of constructions, kept per thread: the lines of
+/// segments, for the number types whose lines cost much (a square root and
+/// a division), and the exact disks of triples (the traits).  The same
+/// segments come back in many constructions, and the same triples in many
+/// decisions.  `Entry`
+/// is default-constructible, its default value is an unused entry (no
+/// segment has length zero), and it has `max_bits` (the table's largest
+/// size, as a power of two).  The table starts with 64 entries and grows by
+/// a factor of four as misses come (a new table each time, the old entries
+/// dropped), so that a small polygon touches a few pages only: a table of
+/// 4,096 interval lines at once was a third of the page faults of a polygon
+/// of 268 vertices, and one of 256 (20 KB) still 2% of the first call on a
+/// glyph of 14 vertices (RESULTS.md, "The cold first call of tiny glyphs").
+/// Entries of plain data come zeroed from calloc, whose fresh pages the
+/// system gives zeroed.
+template <class Entry>
+class Cache_table
+{
+public:
+  ~Cache_table() { release(); }
+  /// The entry of `hash`, or null if there is no table.
+  Entry* at(std::uint64_t hash)
+  {
+    if(!entries_ && !make(6))
+      return nullptr;
+    return &entries_[std::size_t(hash >> (64 - bits_))];
+  }
+  /// After a miss at `at(hash)`: the entry where the line goes (in a
+  /// larger table, once there were many misses).
+  Entry* after_miss(Entry* e, std::uint64_t hash)
+  {
+    if(++misses_ > (std::size_t(2) << bits_) && bits_ < Entry::max_bits && make(bits_ + 2))
+      return &entries_[std::size_t(hash >> (64 - bits_))];
+    return e;
+  }
+
+private:
+  void release()
+  {
+    if constexpr(std::is_trivial<Entry>::value)
+      std::free(entries_);
+    else
+      delete[] entries_;
+  }
+  bool make(unsigned b)
+  {
+    Entry* e;
+    if constexpr(std::is_trivial<Entry>::value)
+      e = static_cast<Entry*>(std::calloc(std::size_t(1) << b, sizeof(Entry)));
+    else
+      e = new(std::nothrow) Entry[std::size_t(1) << b]();
+    if(!e) return false;
+    release();
+    entries_ = e;
+    bits_ = b;
+    misses_ = 0;
+    return true;
+  }
+
+  Entry* entries_ = nullptr;
+  unsigned bits_ = 0;          // 2^bits entries
+  std::size_t misses_ = 0;     // since the table was made
+};
+
+/// Mixes 64-bit words into a hash (for Cache_table).
+inline std::uint64_t mix_hash(std::uint64_t h, std::uint64_t word)
+{
+  return (h ^ word) * 0xff51afd7ed558ccdull;
+}
+
+/// The interval stage's lines of segments whose end points are doubles
+/// (a hit costs a hash and four comparisons).
 template <>
 struct Oriented_line_hook<Interval_nt<false> > {
   typedef Interval_nt<false> I;
   struct Entry {   // (plain data: all zeros is an unused entry)
-    double ax, ay, bx, by;
-    double line[6];   // nx, ny, k: inf and sup of each
-  };
-  struct Table {
-    Entry* entries = nullptr;
-    unsigned bits = 0;          // 2^bits entries
-    std::size_t misses = 0;     // since the table was made
-    ~Table() { std::free(entries); }
-    bool make(unsigned b)
+    static constexpr unsigned max_bits = 12;
+    double key[4];   // ax, ay, bx, by
+    double bounds[6];   // nx, ny, k: inf and sup of each
+    bool holds(const double* c) const { return key[0] == c[0] && key[1] == c[1] && key[2] == c[2] && key[3] == c[3]; }
+    Line_nt<I> line() const { return Line_nt<I>{I(bounds[0], bounds[1]), I(bounds[2], bounds[3]), I(bounds[4], bounds[5])}; }
+    void set(const double* c, const Line_nt<I>& l)
     {
-      Entry* e = static_cast<Entry*>(std::calloc(std::size_t(1) << b, sizeof(Entry)));
-      if(!e) return false;
-      std::free(entries);
-      entries = e;
-      bits = b;
-      misses = 0;
-      return true;
+      std::memcpy(key, c, sizeof key);
+      bounds[0] = l.nx.inf(); bounds[1] = l.nx.sup();
+      bounds[2] = l.ny.inf(); bounds[3] = l.ny.sup();
+      bounds[4] = l.k.inf(); bounds[5] = l.k.sup();
     }
   };
   static Line_nt<I> apply(const Site_nt<I>& s)
   {
     if(!(s.ax.is_point() && s.ay.is_point() && s.bx.is_point() && s.by.is_point()))
       return compute_oriented_line(s);
-    static thread_local Table table;
-    if(!table.entries && !table.make(6))
-      return compute_oriented_line(s);
     const double c[4] = {s.ax.inf(), s.ay.inf(), s.bx.inf(), s.by.inf()};
     std::uint64_t h = 0x9e3779b97f4a7c15ull;
     for(double x : c) {
       std::uint64_t b;
       std::memcpy(&b, &x, sizeof b);
-      h = (h ^ b) * 0xff51afd7ed558ccdull;
+      h = mix_hash(h, b);
     }
-    Entry* e = &table.entries[std::size_t(h >> (64 - table.bits))];
-    if(e->ax == c[0] && e->ay == c[1] && e->bx == c[2] && e->by == c[3])
-      return Line_nt<I>{I(e->line[0], e->line[1]), I(e->line[2], e->line[3]), I(e->line[4], e->line[5])};
+    static thread_local Cache_table<Entry> table;
+    Entry* e = table.at(h);
+    if(e == nullptr)
+      return compute_oriented_line(s);
+    if(e->holds(c))
+      return e->line();
     const Line_nt<I> line = compute_oriented_line(s);
-    if(++table.misses > (std::size_t(2) << table.bits) && table.bits < 12 && table.make(table.bits + 2))
-      e = &table.entries[std::size_t(h >> (64 - table.bits))];
-    e->ax = c[0]; e->ay = c[1]; e->bx = c[2]; e->by = c[3];
-    e->line[0] = line.nx.inf(); e->line[1] = line.nx.sup();
-    e->line[2] = line.ny.inf(); e->line[3] = line.ny.sup();
-    e->line[4] = line.k.inf(); e->line[5] = line.k.sup();
+    table.after_miss(e, h)->set(c, line);
     return line;
   }
 };
