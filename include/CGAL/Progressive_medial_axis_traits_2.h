@@ -1549,10 +1549,22 @@ private:
     Progressive_medial_axes::internal::Triple_relations rt = Progressive_medial_axes::internal::triple_relations<CK>(t);
     {
       Progressive_medial_axes::internal::Circle_nt<Interval> a, b;
-      const int found_a = interval_disk(s, rs, a);
+      // (kept, for coordinates of doubles: on integer grids the ends of
+      // many edges are compared, and each vertex is the end of two)
+      auto kept_interval_disk = [](const Site_2* x, Progressive_medial_axes::internal::Triple_relations& r,
+                                   Progressive_medial_axes::internal::Circle_nt<Interval>& c) {
+        if constexpr(std::is_same<typename CK::FT, double>::value)
+          return kept_disk(x, r, c, [&](Progressive_medial_axes::internal::Triple_relations& q,
+                                        Progressive_medial_axes::internal::Circle_nt<Interval>& d) {
+            return interval_disk(x, q, d);
+          });
+        else
+          return interval_disk(x, r, c);
+      };
+      const int found_a = kept_interval_disk(s, rs, a);
       if(found_a == 0)
         return false;
-      const int found_b = interval_disk(t, rt, b);
+      const int found_b = kept_interval_disk(t, rt, b);
       if(found_b == 0)
         return false;
       if(found_a > 0 && found_b > 0) {
@@ -1730,54 +1742,85 @@ private:
     return Progressive_medial_axes::internal::medial_circle_decided(sn, rel, circle);
   }
 
-  // The disk of a triple in small one-root numbers, kept per thread: on
-  // integer grids, the exact ties compare the disks of the same vertices
-  // again and again (same_disk() at each end of the chain edges of a merge,
-  // then disk() where the vertex is rounded).
-  struct Small_disk_entry {   // (default value: unused)
-    static constexpr unsigned max_bits = 10;
-    bool used = false;
+  // A triple of sites and its relations, as the key of a table of disks.
+  struct Triple_key {
+    bool used = false;   // (default value: unused)
     bool is_point[3] = {};
     double coordinates[12] = {};
     Progressive_medial_axes::internal::Triple_relations rel;
-    int found = 0;
-    Progressive_medial_axes::internal::Circle_nt<Progressive_medial_axes::internal::Small_one_root> circle;
-  };
-  static int small_disk(const Site_2* s, const Progressive_medial_axes::internal::Triple_relations& rel,
-                        Progressive_medial_axes::internal::Circle_nt<Progressive_medial_axes::internal::Small_one_root>& circle)
-  {
-    Small_disk_entry key;
-    std::uint64_t h = 0x9e3779b97f4a7c15ull;
-    for(int i = 0; i < 3; ++i) {
-      key.is_point[i] = s[i].is_point;
-      const double c[4] = {s[i].p.x(), s[i].p.y(), s[i].q.x(), s[i].q.y()};
-      for(int j = 0; j < 4; ++j) {
-        key.coordinates[4 * i + j] = c[j];
-        std::uint64_t b;
-        std::memcpy(&b, &c[j], sizeof b);
-        h = Progressive_medial_axes::internal::mix_hash(h, b);
+    std::uint64_t hash = 0;
+
+    Triple_key() {}
+    Triple_key(const Site_2* s, const Progressive_medial_axes::internal::Triple_relations& r) : used(true), rel(r)
+    {
+      hash = 0x9e3779b97f4a7c15ull;
+      for(int i = 0; i < 3; ++i) {
+        is_point[i] = s[i].is_point;
+        const double c[4] = {s[i].p.x(), s[i].p.y(), s[i].q.x(), s[i].q.y()};
+        for(int j = 0; j < 4; ++j) {
+          coordinates[4 * i + j] = c[j];
+          std::uint64_t b;
+          std::memcpy(&b, &c[j], sizeof b);
+          hash = Progressive_medial_axes::internal::mix_hash(hash, b);
+        }
+        hash = Progressive_medial_axes::internal::mix_hash(hash, std::uint64_t(s[i].is_point));
       }
-      h = Progressive_medial_axes::internal::mix_hash(h, std::uint64_t(s[i].is_point));
     }
-    static thread_local Progressive_medial_axes::internal::Cache_table<Small_disk_entry> table;
-    Small_disk_entry* e = table.at(h);
     // (the relations compared as bytes: equal bytes are equal relations)
-    if(e != nullptr && e->used && std::equal(key.is_point, key.is_point + 3, e->is_point) &&
-       std::equal(key.coordinates, key.coordinates + 12, e->coordinates) &&
-       std::memcmp(&rel, &e->rel, sizeof rel) == 0) {
+    bool operator==(const Triple_key& k) const
+    {
+      return used && k.used && std::equal(is_point, is_point + 3, k.is_point) &&
+             std::equal(coordinates, coordinates + 12, k.coordinates) && std::memcmp(&rel, &k.rel, sizeof rel) == 0;
+    }
+  };
+  // A disk kept in a table: found as disk_nt_decided() returns it, and the
+  // relations as the construction left them (refined by interval_disk()).
+  template <class NT>
+  struct Disk_entry {
+    static constexpr unsigned max_bits = 10;
+    Triple_key key;
+    Progressive_medial_axes::internal::Triple_relations rel;
+    int found = 0;
+    Progressive_medial_axes::internal::Circle_nt<NT> circle;
+  };
+  // construct(rel, circle) for the triple s, or what it gave before for the
+  // same triple and relations in this thread (a table of `Disk_entry<NT>`
+  // for each caller: each passes a lambda of its own).
+  template <class NT, class Construct>
+  static int kept_disk(const Site_2* s, Progressive_medial_axes::internal::Triple_relations& rel,
+                       Progressive_medial_axes::internal::Circle_nt<NT>& circle, const Construct& construct)
+  {
+    const Triple_key key(s, rel);
+    static thread_local Progressive_medial_axes::internal::Cache_table<Disk_entry<NT> > table;
+    Disk_entry<NT>* e = table.at(key.hash);
+    if(e != nullptr && e->key == key) {
+      rel = e->rel;
       circle = e->circle;
       return e->found;
     }
-    const int found = uncached_disk_nt_decided(s, rel, circle);
+    const int found = construct(rel, circle);
     if(e != nullptr) {
-      e = table.after_miss(e, h);
-      *e = key;
-      e->used = true;
+      e = table.after_miss(e, key.hash);
+      e->key = key;
       e->rel = rel;
       e->found = found;
       e->circle = circle;
     }
     return found;
+  }
+
+  // The disk of a triple in small one-root numbers, kept per thread: on
+  // integer grids, the exact ties compare the disks of the same vertices
+  // again and again (same_disk() at each end of the chain edges of a merge,
+  // then disk() where the vertex is rounded).
+  static int small_disk(const Site_2* s, const Progressive_medial_axes::internal::Triple_relations& rel,
+                        Progressive_medial_axes::internal::Circle_nt<Progressive_medial_axes::internal::Small_one_root>& circle)
+  {
+    Progressive_medial_axes::internal::Triple_relations r = rel;
+    return kept_disk(
+      s, r, circle, [&](Progressive_medial_axes::internal::Triple_relations& q, auto& c) {
+        return uncached_disk_nt_decided(s, q, c);
+      });
   }
 };
 
