@@ -97,7 +97,7 @@ struct Sqrt_hook<CORE::Expr> {
 template <>
 struct Oriented_line_hook<Small_one_root> {
   struct Entry {   // (default value: the segment from (0, 0) to (0, 0), unused)
-    static constexpr unsigned max_bits = 10;
+    static constexpr unsigned max_bits = 8;
     Small_rational key[4];
     Line_nt<Small_one_root> value;
     bool holds(const Small_rational* c) const
@@ -1777,7 +1777,7 @@ private:
   // relations as the construction left them (refined by interval_disk()).
   template <class NT>
   struct Disk_entry {
-    static constexpr unsigned max_bits = 10;
+    static constexpr unsigned max_bits = 8;
     Triple_key key;
     Progressive_medial_axes::internal::Triple_relations rel;
     int found = 0;
