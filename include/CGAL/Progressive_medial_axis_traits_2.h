@@ -157,15 +157,17 @@ Triple_relations triple_relations(const Site_ s[3])
 {
   Exact_orientation<K> orientation;
   Triple_relations rel;
+  // (computed for every event time: each symmetric relation once)
+  for(int i = 0; i < 3; ++i)
+    for(int j = i + 1; j < 3; ++j)
+      rel.same[i][j] = rel.same[j][i] = (s[i] == s[j]);
   for(int i = 0; i < 3; ++i)
     for(int j = 0; j < 3; ++j) {
-      if(i == j) continue;
-      rel.same[i][j] = (s[i] == s[j]);
-      if(s[i].is_point && !s[j].is_point) {
+      if(i == j || s[j].is_point) continue;
+      if(s[i].is_point) {
         rel.point_is_source[i][j] = (s[i].p == s[j].p);
         rel.point_is_target[i][j] = (s[i].p == s[j].q);
-      }
-      if(!s[i].is_point && !s[j].is_point && s[i].q == s[j].p) {
+      } else if(s[i].q == s[j].p) {
         const Orientation turn = orientation(s[i].p, s[i].q, s[j].q);
         rel.flat_join[i][j] = (turn == COLLINEAR);
         rel.corner_turn[i][j] = static_cast<signed char>(int(turn));
