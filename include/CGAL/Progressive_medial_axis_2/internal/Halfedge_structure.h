@@ -24,6 +24,18 @@
 #include <utility>
 #include <vector>
 
+/// Marks a function the compiler must not inline (a rare path of a small,
+/// hot function).
+#ifndef CGAL_PMA2_NOINLINE
+#if defined(__GNUC__)
+#define CGAL_PMA2_NOINLINE __attribute__((noinline))
+#elif defined(_MSC_VER)
+#define CGAL_PMA2_NOINLINE __declspec(noinline)
+#else
+#define CGAL_PMA2_NOINLINE
+#endif
+#endif
+
 namespace CGAL {
 namespace Progressive_medial_axes {
 namespace internal {
@@ -389,7 +401,16 @@ private:
   template <class T>
   void record(std::vector<std::pair<int, T> >& log, const std::vector<T>& a, int i, std::size_t saved)
   {
-    if(journal_ && std::size_t(i) < saved) log.emplace_back(i, a[i]);
+    if(journal_ && std::size_t(i) < saved) append(log, i, a[i]);
+  }
+  // (out of line: the accessors that record, he() and the others, are
+  // called for every change of the structure, and only a progressive
+  // driver journals; with the append inline, the compiler did not inline
+  // them: 4.6% more instructions on a one-shot of c1m_CHN_0)
+  template <class T>
+  CGAL_PMA2_NOINLINE static void append(std::vector<std::pair<int, T> >& log, int i, const T& value)
+  {
+    log.emplace_back(i, value);
   }
   template <class T>
   static void undo(std::vector<std::pair<int, T> >& log, std::vector<T>& a)
