@@ -120,14 +120,7 @@ struct Oriented_line_hook<Small_one_root> {
     for(const Small_rational& x : c)   // (the low 64 bits of each)
       h = mix_hash(mix_hash(h, std::uint64_t(x.numerator())), std::uint64_t(x.denominator()));
     static thread_local Cache_table<Entry> table;
-    Entry* e = table.at(h);
-    if(e == nullptr)
-      return compute_oriented_line(s);
-    if(e->holds(c))
-      return e->line();
-    const Line_nt<Small_one_root> line = compute_oriented_line(s);
-    table.after_miss(e, h)->set(c, line);
-    return line;
+    return table.line(h, c, [&] { return compute_oriented_line(s); });
   }
 };
 

@@ -242,7 +242,22 @@ public:
       return nullptr;
     return &entries_[std::size_t(hash >> (64 - bits_))];
   }
-  /// After a miss at `at(hash)`: the entry where the line goes (in a
+  /// The line of the segment `key` of hash `hash`: the entry's, or
+  /// compute() kept in the entry (for entries with `holds(key)`, `line()`
+  /// and `set(key, line)`).
+  template <class Key, class Compute>
+  auto line(std::uint64_t hash, const Key& key, const Compute& compute) -> decltype(compute())
+  {
+    Entry* e = at(hash);
+    if(e == nullptr)
+      return compute();
+    if(e->holds(key))
+      return e->line();
+    const auto value = compute();
+    after_miss(e, hash)->set(key, value);
+    return value;
+  }
+  /// After a miss at `at(hash)`: the entry where the value goes (in a
   /// larger table, once there were many misses).
   Entry* after_miss(Entry* e, std::uint64_t hash)
   {
@@ -316,14 +331,7 @@ struct Oriented_line_hook<Interval_nt<false> > {
       h = mix_hash(h, b);
     }
     static thread_local Cache_table<Entry> table;
-    Entry* e = table.at(h);
-    if(e == nullptr)
-      return compute_oriented_line(s);
-    if(e->holds(c))
-      return e->line();
-    const Line_nt<I> line = compute_oriented_line(s);
-    table.after_miss(e, h)->set(c, line);
-    return line;
+    return table.line(h, c, [&] { return compute_oriented_line(s); });
   }
 };
 
