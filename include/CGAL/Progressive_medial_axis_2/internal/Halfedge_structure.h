@@ -35,6 +35,17 @@
 #define CGAL_PMA2_NOINLINE
 #endif
 #endif
+/// Marks a tiny function the compiler must inline even into the merge's
+/// large functions, where its size limits stop inlining.
+#ifndef CGAL_PMA2_ALWAYS_INLINE
+#if defined(__GNUC__)
+#define CGAL_PMA2_ALWAYS_INLINE inline __attribute__((always_inline))
+#elif defined(_MSC_VER)
+#define CGAL_PMA2_ALWAYS_INLINE __forceinline
+#else
+#define CGAL_PMA2_ALWAYS_INLINE inline
+#endif
+#endif
 
 namespace CGAL {
 namespace Progressive_medial_axes {
@@ -135,7 +146,7 @@ public:
   std::size_t number_of_vertices() const { return vertices_.size() - free_vertices_.size(); }
   std::size_t number_of_faces() const { return faces_.size() - free_faces_.size(); }
 
-  void link(int h, int n)
+  CGAL_PMA2_ALWAYS_INLINE void link(int h, int n)
   {
     he(h).next = n;
     he(n).prev = h;
