@@ -99,16 +99,16 @@ struct Oriented_line_hook<Small_one_root> {
   struct Entry {   // (default value: the segment from (0, 0) to (0, 0), unused)
     static constexpr unsigned max_bits = 8;
     Small_rational key[4];
-    Line_nt<Small_one_root> value;
+    Line_nt<Small_one_root> line;
     bool holds(const Small_rational* c) const
     {
       return key[0] == c[0] && key[1] == c[1] && key[2] == c[2] && key[3] == c[3];
     }
-    const Line_nt<Small_one_root>& line() const { return value; }
+    const Line_nt<Small_one_root>& value() const { return line; }
     void set(const Small_rational* c, const Line_nt<Small_one_root>& l)
     {
       std::copy(c, c + 4, key);
-      value = l;
+      line = l;
     }
   };
   static Line_nt<Small_one_root> apply(const Site_nt<Small_one_root>& s)
@@ -120,7 +120,7 @@ struct Oriented_line_hook<Small_one_root> {
     for(const Small_rational& x : c)   // (the low 64 bits of each)
       h = mix_hash(mix_hash(h, std::uint64_t(x.numerator())), std::uint64_t(x.denominator()));
     static thread_local Cache_table<Entry> table;
-    return table.line(h, c, [&] { return compute_oriented_line(s); });
+    return table.value(h, c, [&] { return compute_oriented_line(s); });
   }
 };
 
@@ -1768,15 +1768,26 @@ private:
              std::equal(coordinates, coordinates + 12, k.coordinates) && std::memcmp(&rel, &k.rel, sizeof rel) == 0;
     }
   };
-  // A disk kept in a table: found as disk_nt_decided() returns it, and the
-  // relations as the construction left them (refined by interval_disk()).
+  // A disk as disk_nt_decided() returns it (found), with the relations as
+  // the construction left them (refined by interval_disk()).
+  template <class NT>
+  struct Kept_disk {
+    int found = 0;
+    Progressive_medial_axes::internal::Triple_relations rel;
+    Progressive_medial_axes::internal::Circle_nt<NT> circle;
+  };
   template <class NT>
   struct Disk_entry {
     static constexpr unsigned max_bits = 8;
     Triple_key key;
-    Progressive_medial_axes::internal::Triple_relations rel;
-    int found = 0;
-    Progressive_medial_axes::internal::Circle_nt<NT> circle;
+    Kept_disk<NT> disk;
+    bool holds(const Triple_key& k) const { return key == k; }
+    const Kept_disk<NT>& value() const { return disk; }
+    void set(const Triple_key& k, const Kept_disk<NT>& d)
+    {
+      key = k;
+      disk = d;
+    }
   };
   // construct(rel, circle) for the triple s, or what it gave before for the
   // same triple and relations in this thread (a table of `Disk_entry<NT>`
@@ -1787,21 +1798,15 @@ private:
   {
     const Triple_key key(s, rel);
     static thread_local Progressive_medial_axes::internal::Cache_table<Disk_entry<NT> > table;
-    Disk_entry<NT>* e = table.at(key.hash);
-    if(e != nullptr && e->key == key) {
-      rel = e->rel;
-      circle = e->circle;
-      return e->found;
-    }
-    const int found = construct(rel, circle);
-    if(e != nullptr) {
-      e = table.after_miss(e, key.hash);
-      e->key = key;
-      e->rel = rel;
-      e->found = found;
-      e->circle = circle;
-    }
-    return found;
+    const Kept_disk<NT> d = table.value(key.hash, key, [&] {
+      Kept_disk<NT> k;
+      k.rel = rel;
+      k.found = construct(k.rel, k.circle);
+      return k;
+    });
+    rel = d.rel;
+    circle = d.circle;
+    return d.found;
   }
 
   // The disk of a triple in small one-root numbers, kept per thread: on

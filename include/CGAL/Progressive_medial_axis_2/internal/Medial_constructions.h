@@ -217,12 +217,11 @@ Line_nt<NT> oriented_line(const Site_nt<NT>& s)
 
 /// A direct-mapped table of constructions, kept per thread: the lines of
 /// segments, for the number types whose lines cost much (a square root and
-/// a division), and the exact disks of triples (the traits).  The same
-/// segments come back in many constructions, and the same triples in many
-/// decisions.  `Entry`
-/// is default-constructible, its default value is an unused entry (no
-/// segment has length zero), and it has `max_bits` (the table's largest
-/// size, as a power of two).  The table starts with 64 entries and grows by
+/// a division), and the disks of triples (the traits).  The same segments
+/// come back in many constructions, and the same triples in many
+/// decisions.  `Entry` is default-constructible, its default value is an
+/// unused entry, and it has `max_bits` (the table's largest size, as a
+/// power of two), `holds(key)`, `value()` and `set(key, value)`.  The table starts with 64 entries and grows by
 /// a factor of four as misses come (a new table each time, the old entries
 /// dropped), so that a small polygon touches a few pages only: a table of
 /// 4,096 interval lines at once was a third of the page faults of a polygon
@@ -235,35 +234,22 @@ class Cache_table
 {
 public:
   ~Cache_table() { release(); }
-  /// The entry of `hash`, or null if there is no table.
-  Entry* at(std::uint64_t hash)
+  /// The value for `key` of hash `hash`: the entry's, or compute() kept
+  /// in the entry.
+  template <class Key, class Compute>
+  auto value(std::uint64_t hash, const Key& key, const Compute& compute) -> decltype(compute())
   {
     if(!entries_ && !make(6))
-      return nullptr;
-    return &entries_[std::size_t(hash >> (64 - bits_))];
-  }
-  /// The line of the segment `key` of hash `hash`: the entry's, or
-  /// compute() kept in the entry (for entries with `holds(key)`, `line()`
-  /// and `set(key, line)`).
-  template <class Key, class Compute>
-  auto line(std::uint64_t hash, const Key& key, const Compute& compute) -> decltype(compute())
-  {
-    Entry* e = at(hash);
-    if(e == nullptr)
       return compute();
+    Entry* e = &entries_[std::size_t(hash >> (64 - bits_))];
     if(e->holds(key))
-      return e->line();
+      return e->value();
     const auto value = compute();
-    after_miss(e, hash)->set(key, value);
-    return value;
-  }
-  /// After a miss at `at(hash)`: the entry where the value goes (in a
-  /// larger table, once there were many misses).
-  Entry* after_miss(Entry* e, std::uint64_t hash)
-  {
+    // (once there were many misses, in a larger table)
     if(++misses_ > (std::size_t(2) << bits_) && bits_ < Entry::max_bits && make(bits_ + 2))
-      return &entries_[std::size_t(hash >> (64 - bits_))];
-    return e;
+      e = &entries_[std::size_t(hash >> (64 - bits_))];
+    e->set(key, value);
+    return value;
   }
 
 private:
@@ -310,7 +296,7 @@ struct Oriented_line_hook<Interval_nt<false> > {
     double key[4];   // ax, ay, bx, by
     double bounds[6];   // nx, ny, k: inf and sup of each
     bool holds(const double* c) const { return key[0] == c[0] && key[1] == c[1] && key[2] == c[2] && key[3] == c[3]; }
-    Line_nt<I> line() const { return Line_nt<I>{I(bounds[0], bounds[1]), I(bounds[2], bounds[3]), I(bounds[4], bounds[5])}; }
+    Line_nt<I> value() const { return Line_nt<I>{I(bounds[0], bounds[1]), I(bounds[2], bounds[3]), I(bounds[4], bounds[5])}; }
     void set(const double* c, const Line_nt<I>& l)
     {
       std::memcpy(key, c, sizeof key);
@@ -331,7 +317,7 @@ struct Oriented_line_hook<Interval_nt<false> > {
       h = mix_hash(h, b);
     }
     static thread_local Cache_table<Entry> table;
-    return table.line(h, c, [&] { return compute_oriented_line(s); });
+    return table.value(h, c, [&] { return compute_oriented_line(s); });
   }
 };
 
