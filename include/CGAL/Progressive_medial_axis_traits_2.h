@@ -1307,11 +1307,23 @@ private:
     return t;
   }
 
+  // The comparison of two times: their intervals decide nearly all of them
+  // (this part is inlined into the merge's event queue), the stages after
+  // them are out of line (compare_undecided_times()): inlined whole, the
+  // function's entry and exit saved the registers of those stages at every
+  // call, about a tenth of its cost on c1m_CHN_0.
   static Comparison_result compare_times(const Event_time_2& a, const Event_time_2& b)
   {
-    Uncertain<Comparison_result> r = CGAL::compare(a.approx(), b.approx());
-    if(is_certain(r))
-      return get_certain(r);
+    const Interval &x = a.approx(), &y = b.approx();
+    if(x.inf() > y.sup()) return LARGER;
+    if(y.inf() > x.sup()) return SMALLER;
+    if(x.inf() == y.sup() && y.inf() == x.sup()) return EQUAL;
+    return compare_undecided_times(a, b);
+  }
+
+  // compare_times() where the intervals overlap.
+  CGAL_PMA2_NOINLINE static Comparison_result compare_undecided_times(const Event_time_2& a, const Event_time_2& b)
+  {
     // the two ends of one separator
     if(a.kind_ == b.kind_ && a.kind_ <= Progressive_medial_axes::internal::TIME_END && a.c_ == b.c_)
       return EQUAL;

@@ -18,34 +18,12 @@
 #define CGAL_PROGRESSIVE_MEDIAL_AXIS_2_INTERNAL_HALFEDGE_STRUCTURE_H
 
 #include <CGAL/assertions.h>
+#include <CGAL/Progressive_medial_axis_2/internal/Inlining.h>
 
 #include <cstddef>
 #include <stdexcept>
 #include <utility>
 #include <vector>
-
-/// Marks a function the compiler must not inline (a rare path of a small,
-/// hot function).
-#ifndef CGAL_PMA2_NOINLINE
-#if defined(__GNUC__)
-#define CGAL_PMA2_NOINLINE __attribute__((noinline))
-#elif defined(_MSC_VER)
-#define CGAL_PMA2_NOINLINE __declspec(noinline)
-#else
-#define CGAL_PMA2_NOINLINE
-#endif
-#endif
-/// Marks a tiny function the compiler must inline even into the merge's
-/// large functions, where its size limits stop inlining.
-#ifndef CGAL_PMA2_ALWAYS_INLINE
-#if defined(__GNUC__)
-#define CGAL_PMA2_ALWAYS_INLINE inline __attribute__((always_inline))
-#elif defined(_MSC_VER)
-#define CGAL_PMA2_ALWAYS_INLINE __forceinline
-#else
-#define CGAL_PMA2_ALWAYS_INLINE inline
-#endif
-#endif
 
 namespace CGAL {
 namespace Progressive_medial_axes {
@@ -156,17 +134,21 @@ public:
   /// vertices are set by the caller.
   int new_edge(int left_face, int right_face)
   {
-    int h;
-    if(!free_edges_.empty()) {
-      h = pop(free_edges_, FREE_EDGES);
-      he(h) = Halfedge();
-      he(h + 1) = Halfedge();
-    } else {
-      h = int(halfedges_.size());
+    if(free_edges_.empty()) {
+      // (a new pair lies beyond the journal's saved sizes: nothing to record)
+      const int h = int(halfedges_.size());
       require_indexable(halfedges_.size() + 2);
-      halfedges_.resize(halfedges_.size() + 2);
+      Halfedge left, right;
+      left.face = left_face;
+      right.face = right_face;
+      halfedges_.push_back(left);
+      halfedges_.push_back(right);
       zero_length_.push_back(0);
+      return h;
     }
+    const int h = pop(free_edges_, FREE_EDGES);
+    he(h) = Halfedge();
+    he(h + 1) = Halfedge();
     set_zero_length(h, false);
     he(h).face = left_face;
     he(h + 1).face = right_face;

@@ -17,6 +17,7 @@
 #ifndef CGAL_PROGRESSIVE_MEDIAL_AXIS_2_INTERNAL_MEDIAL_CONSTRUCTIONS_H
 #define CGAL_PROGRESSIVE_MEDIAL_AXIS_2_INTERNAL_MEDIAL_CONSTRUCTIONS_H
 
+#include <CGAL/Progressive_medial_axis_2/internal/Inlining.h>
 #include <CGAL/Interval_nt.h>
 #include <CGAL/number_utils.h>
 #include <CGAL/Uncertain.h>
@@ -710,13 +711,15 @@ int touches_segments(const Site_nt<NT> s[3], const Triple_relations& rel, const 
     const bool at_corner = (at_source != 0 || at_target != 0) && decided(c.r > 0) == 1;
     if(at_corner && (at_source < 0 || at_target < 0)) return 0;
     NT dx = s[i].bx - s[i].ax, dy = s[i].by - s[i].ay;
-    NT slack = NT(tolerance) * (dx * dx + dy * dy);
+    // (without a tolerance, no slack to compute: a fifth of this function's
+    // instructions in intervals)
+    const NT low = tolerance != 0 ? NT(-(NT(tolerance) * (dx * dx + dy * dy))) : NT(0);
     if(!(at_corner && at_source > 0)) {
-      const int before = decided((c.x - s[i].ax) * dx + (c.y - s[i].ay) * dy < -slack);
+      const int before = decided((c.x - s[i].ax) * dx + (c.y - s[i].ay) * dy < low);
       if(before != 0) return before < 0 ? -1 : 0;
     }
     if(!(at_corner && at_target > 0)) {
-      const int beyond = decided((s[i].bx - c.x) * dx + (s[i].by - c.y) * dy < -slack);
+      const int beyond = decided((s[i].bx - c.x) * dx + (s[i].by - c.y) * dy < low);
       if(beyond != 0) return beyond < 0 ? -1 : 0;
     }
   }

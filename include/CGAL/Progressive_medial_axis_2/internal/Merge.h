@@ -75,6 +75,7 @@
 
 #include <algorithm>
 #include <cstddef>
+#include <utility>
 #include <vector>
 
 #ifdef CGAL_PMA2_TRACE
@@ -480,7 +481,7 @@ private:
       Switch s{w, G, Gp, Hds::twin(plus_[j - 1]), Hds::twin(plus_[j]), Time()};
       if(!switch_time(line_, site_p_, site(G), site(Gp), s.time))
         s.time = traits_.compute_foot_time_2_object()(line_, vertex_point(w));
-      sw_plus_.push_back(s);
+      sw_plus_.push_back(std::move(s));
     }
     const int km = int(minus_.size());
     switch_vertex_minus_.assign(km > 0 ? km - 1 : 0, NO_INDEX);
@@ -495,7 +496,7 @@ private:
       Switch s{w, G, Gp, Hds::twin(minus_[j]), Hds::twin(minus_[j - 1]), Time()};
       if(!switch_time(line_, site_m_, site(Gp), site(G), s.time))
         s.time = traits_.compute_foot_time_2_object()(line_, vertex_point(w));
-      sw_minus_.push_back(s);
+      sw_minus_.push_back(std::move(s));
     }
   }
 
@@ -532,7 +533,7 @@ private:
     if(traits_.is_event_in_past_2_object()(t, now(), line_))
       return;
     int ev = int(events_.size());
-    events_.push_back(Event{t, n, true});
+    events_.push_back(Event{std::move(t), n, true});
     nodes_[n].event = ev;
     heap_.push_back(ev);
     std::push_heap(heap_.begin(), heap_.end(), [this](int x, int y) { return event_after(x, y); });
