@@ -51,6 +51,19 @@ namespace CGAL {
 namespace Progressive_medial_axes {
 namespace internal {
 
+/// Whether two points are at one place.  With double coordinates they are
+/// compared directly: the kernel's `==` (Epick's static filter) costs
+/// several times more, and the relations of every event time's triple ask
+/// it up to nine times.
+template <class Point_2>
+bool same_place(const Point_2& a, const Point_2& b)
+{
+  if constexpr(std::is_same<std::decay_t<decltype(a.x())>, double>::value)
+    return a.x() == b.x() && a.y() == b.y();
+  else
+    return a == b;
+}
+
 /// A generator of the medial axis as the traits see it: a point, or a
 /// segment from `p` to `q` with the shape on its left.
 template <class Point_2_>
@@ -67,7 +80,7 @@ struct Site {
   friend bool operator==(const Site& a, const Site& b)
   {
     if(a.is_point != b.is_point) return false;
-    return a.is_point ? a.p == b.p : (a.p == b.p && a.q == b.q);
+    return a.is_point ? same_place(a.p, b.p) : (same_place(a.p, b.p) && same_place(a.q, b.q));
   }
 };
 
@@ -158,9 +171,9 @@ Triple_relations triple_relations(const Site_ s[3])
     for(int j = 0; j < 3; ++j) {
       if(i == j || s[j].is_point) continue;
       if(s[i].is_point) {
-        rel.point_is_source[i][j] = (s[i].p == s[j].p);
-        rel.point_is_target[i][j] = (s[i].p == s[j].q);
-      } else if(s[i].q == s[j].p) {
+        rel.point_is_source[i][j] = same_place(s[i].p, s[j].p);
+        rel.point_is_target[i][j] = same_place(s[i].p, s[j].q);
+      } else if(same_place(s[i].q, s[j].p)) {
         const Orientation turn = orientation(s[i].p, s[i].q, s[j].q);
         rel.flat_join[i][j] = (turn == COLLINEAR);
         rel.corner_turn[i][j] = static_cast<signed char>(int(turn));
@@ -321,13 +334,13 @@ enum Time_kind : unsigned char { TIME_ZERO, TIME_END, TIME_SWITCH, TIME_VANISH, 
 template <class K, class Site_>
 Time_kind switch_time_kind(const Site_& line, const Site_& c, const Site_& a, const Site_& b)
 {
-  if((a.is_point && a.p == line.p) || (b.is_point && b.p == line.p)) return TIME_ZERO;
-  if((a.is_point && a.p == line.q) || (b.is_point && b.p == line.q)) return TIME_END;
+  if((a.is_point && same_place(a.p, line.p)) || (b.is_point && same_place(b.p, line.p))) return TIME_ZERO;
+  if((a.is_point && same_place(a.p, line.q)) || (b.is_point && same_place(b.p, line.q))) return TIME_END;
   if(!c.is_point) {
     // (flat joins as triple_relations() finds them: c then a, or b then c)
     const typename K::Point_2* z = nullptr;
-    if(!a.is_point && a.p == c.q && Exact_orientation<K>()(c.p, c.q, a.q) == COLLINEAR) z = &c.q;
-    else if(!b.is_point && b.q == c.p && Exact_orientation<K>()(b.p, b.q, c.q) == COLLINEAR) z = &c.p;
+    if(!a.is_point && same_place(a.p, c.q) && Exact_orientation<K>()(c.p, c.q, a.q) == COLLINEAR) z = &c.q;
+    else if(!b.is_point && same_place(b.q, c.p) && Exact_orientation<K>()(b.p, b.q, c.q) == COLLINEAR) z = &c.p;
     if(z != nullptr && *z == line.p) return TIME_ZERO;
     if(z != nullptr && *z == line.q) return TIME_END;
   }

@@ -478,10 +478,14 @@ private:
     for(int j = k - 1; j >= jmin; --j) {
       const int w = hds_.target(plus_[j - 1]);
       const int G = face_across(plus_[j - 1]), Gp = face_across(plus_[j]);
-      Switch s{w, G, Gp, Hds::twin(plus_[j - 1]), Hds::twin(plus_[j]), Time()};
+      Switch& s = sw_plus_.emplace_back();   // (computed in place, as events are)
+      s.vertex = w;
+      s.gnew = G;
+      s.gold = Gp;
+      s.te_new = Hds::twin(plus_[j - 1]);
+      s.te_old = Hds::twin(plus_[j]);
       if(!switch_time(line_, site_p_, site(G), site(Gp), s.time))
         s.time = traits_.compute_foot_time_2_object()(line_, vertex_point(w));
-      sw_plus_.push_back(std::move(s));
     }
     const int km = int(minus_.size());
     switch_vertex_minus_.assign(km > 0 ? km - 1 : 0, NO_INDEX);
@@ -493,10 +497,14 @@ private:
     for(int j = 1; j <= jmax; ++j) {
       const int w = hds_.target(minus_[j - 1]);
       const int Gp = face_across(minus_[j - 1]), G = face_across(minus_[j]);
-      Switch s{w, G, Gp, Hds::twin(minus_[j]), Hds::twin(minus_[j - 1]), Time()};
+      Switch& s = sw_minus_.emplace_back();
+      s.vertex = w;
+      s.gnew = G;
+      s.gold = Gp;
+      s.te_new = Hds::twin(minus_[j]);
+      s.te_old = Hds::twin(minus_[j - 1]);
       if(!switch_time(line_, site_m_, site(Gp), site(G), s.time))
         s.time = traits_.compute_foot_time_2_object()(line_, vertex_point(w));
-      sw_minus_.push_back(std::move(s));
     }
   }
 
@@ -527,13 +535,19 @@ private:
     const int fa = nodes_[a].face, fb = nodes_[n].face, fc = nodes_[c].face;
     if(fa == fc)
       return;
-    Time t;
-    if(!traits_.compute_vanishing_time_2_object()(line_, site(fa), site(fb), site(fc), t))
+    // (the time is computed in its place in the queue: copying or moving
+    // an event time costs about as much as the queue's other work for it;
+    // an event that is dropped leaves nothing behind, and every merge
+    // clears the queue first)
+    const int ev = int(events_.size());
+    Event& e = events_.emplace_back();
+    if(!traits_.compute_vanishing_time_2_object()(line_, site(fa), site(fb), site(fc), e.time) ||
+       traits_.is_event_in_past_2_object()(e.time, now(), line_)) {
+      events_.pop_back();
       return;
-    if(traits_.is_event_in_past_2_object()(t, now(), line_))
-      return;
-    int ev = int(events_.size());
-    events_.push_back(Event{std::move(t), n, true});
+    }
+    e.node = n;
+    e.valid = true;
     nodes_[n].event = ev;
     heap_.push_back(ev);
     std::push_heap(heap_.begin(), heap_.end(), [this](int x, int y) { return event_after(x, y); });
