@@ -271,6 +271,7 @@ Site_nt<NT> site_nt(const Site_& s, const Convert& cv)
   r.ax = cv(s.p.x()); r.ay = cv(s.p.y());
   r.bx = cv(s.q.x()); r.by = cv(s.q.y());
   r.axis_parallel = !s.is_point && (s.p.x() == s.q.x() || s.p.y() == s.q.y());
+  r.double_coordinates = std::is_same<std::decay_t<decltype(s.p.x())>, double>::value;
   return r;
 }
 

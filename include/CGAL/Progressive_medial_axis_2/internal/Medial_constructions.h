@@ -82,6 +82,9 @@ struct Site_nt {
   NT ax, ay, bx, by;
   // the segment is vertical or horizontal (decided on the input coordinates)
   bool axis_parallel = false;
+  // the input coordinates are doubles (set by site_nt()): in intervals,
+  // points, which the interval stage's line hook then need not test
+  bool double_coordinates = false;
 };
 
 // Square root and absolute value found by argument-dependent lookup, so
@@ -308,7 +311,7 @@ struct Oriented_line_hook<Interval_nt<false> > {
   };
   static Line_nt<I> apply(const Site_nt<I>& s)
   {
-    if(!(s.ax.is_point() && s.ay.is_point() && s.bx.is_point() && s.by.is_point()))
+    if(!(s.double_coordinates || (s.ax.is_point() && s.ay.is_point() && s.bx.is_point() && s.by.is_point())))
       return compute_oriented_line(s);
     const double c[4] = {s.ax.inf(), s.ay.inf(), s.bx.inf(), s.by.inf()};
     std::uint64_t h = 0x9e3779b97f4a7c15ull;
