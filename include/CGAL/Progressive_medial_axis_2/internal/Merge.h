@@ -247,6 +247,8 @@ private:
     bool valid;
   };
   struct Switch {
+    // (the time is computed afterwards, in the switch's place in its list)
+    Switch(int v, int n, int o, int tn, int to) : vertex(v), gnew(n), gold(o), te_new(tn), te_old(to) {}
     int vertex;
     int gnew, gold;        // generator entering L, generator it goes next to
     int te_new, te_old;    // half-edges of those generators along the consumed cell
@@ -478,12 +480,7 @@ private:
     for(int j = k - 1; j >= jmin; --j) {
       const int w = hds_.target(plus_[j - 1]);
       const int G = face_across(plus_[j - 1]), Gp = face_across(plus_[j]);
-      Switch& s = sw_plus_.emplace_back();   // (computed in place, as events are)
-      s.vertex = w;
-      s.gnew = G;
-      s.gold = Gp;
-      s.te_new = Hds::twin(plus_[j - 1]);
-      s.te_old = Hds::twin(plus_[j]);
+      Switch& s = sw_plus_.emplace_back(w, G, Gp, Hds::twin(plus_[j - 1]), Hds::twin(plus_[j]));
       if(!switch_time(line_, site_p_, site(G), site(Gp), s.time))
         s.time = traits_.compute_foot_time_2_object()(line_, vertex_point(w));
     }
@@ -497,12 +494,7 @@ private:
     for(int j = 1; j <= jmax; ++j) {
       const int w = hds_.target(minus_[j - 1]);
       const int Gp = face_across(minus_[j - 1]), G = face_across(minus_[j]);
-      Switch& s = sw_minus_.emplace_back();
-      s.vertex = w;
-      s.gnew = G;
-      s.gold = Gp;
-      s.te_new = Hds::twin(minus_[j]);
-      s.te_old = Hds::twin(minus_[j - 1]);
+      Switch& s = sw_minus_.emplace_back(w, G, Gp, Hds::twin(minus_[j]), Hds::twin(minus_[j - 1]));
       if(!switch_time(line_, site_m_, site(Gp), site(G), s.time))
         s.time = traits_.compute_foot_time_2_object()(line_, vertex_point(w));
     }
