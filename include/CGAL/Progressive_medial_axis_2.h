@@ -35,6 +35,8 @@
 #include <exception>
 #include <memory>
 #include <mutex>
+#include <stdexcept>
+#include <string>
 #include <thread>
 #include <type_traits>
 #include <vector>
@@ -495,6 +497,40 @@ bool one_shot_by_boundary_evolution(const std::vector<std::vector<typename Trait
   return true;
 }
 
+/// The axis of `rings` by region growing, all steps done, into `data`
+/// (empty): the one-shot's way out where the divide and conquer or boundary
+/// evolution met an anomaly.  Such an anomaly is a bug, not a rounding
+/// error (it happens with exact decisions too): a merge that closes a ring
+/// around a small hole, where the cell of one generator touches the
+/// separator from both sides, can take the vanishing of the wrong one of
+/// two neighbouring cells (RESULTS.md, "A merge anomaly on real data",
+/// thirty-first session).  Region growing closes its rings along other
+/// diagonals.  Throws `std::runtime_error` if it meets an anomaly too: no
+/// axis is better than a wrong one.
+template <class Traits>
+void one_shot_by_region_growing(const std::vector<std::vector<typename Traits::Kernel::Point_2> >& rings,
+                                const Traits& traits,
+                                Medial_axis_data<typename Traits::Point_2, typename Traits::FT>& data,
+                                Progressive_medial_axis_statistics& stats)
+{
+  set_points(data, rings, traits.orientation_2_object());
+  Medial_axis_engine<Traits> engine(data, traits);
+  Region_growing<Traits> driver(engine);
+  data.hds.reserve(2 * data.points.size() + 16, 4 * data.points.size() + 16);
+  driver.start();
+  Boundary_evolution_counts counts;   // (its merge counts; region growing has no cuts)
+  for(std::size_t k = 1; k <= driver.number_of_steps(); ++k)
+    driver.step(k, counts);
+  engine.resolve_pending();
+  if(counts.merges.anomalies != 0)
+    throw std::runtime_error("internal error: the merges of this polygon are inconsistent (" +
+                             std::to_string(counts.merges.anomalies) +
+                             " anomalies in the divide and conquer and in region growing); please report the input");
+  copy_counts(stats, counts.merges);
+  stats.boundary_evolution_one_shots = 0;
+  stats.region_growing_one_shots = 1;
+}
+
 template <class Traits>
 Medial_axis_2<typename Traits::Kernel>
 one_shot_medial_axis(const std::vector<std::vector<typename Traits::Kernel::Point_2> >& rings, const Traits& traits,
@@ -621,6 +657,10 @@ one_shot_medial_axis(const std::vector<std::vector<typename Traits::Kernel::Poin
       // divide and conquer
       auto evolved = std::make_shared<Data>();
       if(one_shot_by_boundary_evolution(rings, traits, events * double(T) / threads, *evolved, stats)) {
+        if(stats.anomalies != 0) {
+          evolved = std::make_shared<Data>();
+          one_shot_by_region_growing(rings, traits, *evolved, stats);
+        }
         stats.merge_seconds = seconds_since(t0);
         if(statistics)
           *statistics = stats;
@@ -638,6 +678,14 @@ one_shot_medial_axis(const std::vector<std::vector<typename Traits::Kernel::Poin
   stats.parts_seconds_sum = counts.parts_seconds_sum;
   stats.parts_seconds_max = counts.parts_seconds_max;
   stats.join_seconds = counts.join_seconds;
+  if(counts.anomalies != 0) {   // (a bug of the merge: see one_shot_by_region_growing())
+    auto redone = std::make_shared<Data>();
+    one_shot_by_region_growing(rings, traits, *redone, stats);
+    stats.merge_seconds = seconds_since(t0);
+    if(statistics)
+      *statistics = stats;
+    return Medial_axis_access::make<Kernel>(std::shared_ptr<const Data>(redone));
+  }
   if(statistics)
     *statistics = stats;
   return Medial_axis_access::make<Kernel>(std::shared_ptr<const Data>(data));

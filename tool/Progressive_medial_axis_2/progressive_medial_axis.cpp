@@ -420,6 +420,7 @@ void add_statistics(CGAL::Progressive_medial_axis_statistics& s, const CGAL::Pro
   s.splits += t.splits;
   s.recomputed_steps += t.recomputed_steps;
   s.boundary_evolution_one_shots += t.boundary_evolution_one_shots;
+  s.region_growing_one_shots += t.region_growing_one_shots;
 }
 
 // One polygon of the input, its axis and what is computed from it.
@@ -895,6 +896,15 @@ int run(const Options& o)
     job.steps = pma->number_of_steps();
   }
   const double total_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  {
+    // (a one-shot that meets an anomaly computes the axis again by region
+    // growing; a progressive run cannot, and says so)
+    std::size_t anomalies = 0;
+    for(const Job& job : jobs) anomalies += job.stats.anomalies;
+    if(anomalies != 0)
+      std::cerr << "progressive_medial_axis: warning: " << anomalies
+                << " merge anomalies: the axis may be wrong near them (please report the input)\n";
+  }
   // significance, pruning and centerlines after the axes: time_total ends at
   // the final axis, they have time_prune of their own
   if(o.analysed())
@@ -1059,6 +1069,7 @@ int run(const Options& o)
                   "time_span %.6f\n",
                   s.parts, s.parts_seconds_sum, s.parts_seconds_max, s.join_seconds, work, read_seconds + span);
       std::printf("oneshot_boundary_evolution %zu\n", s.boundary_evolution_one_shots);
+      std::printf("oneshot_region_growing %zu\n", s.region_growing_one_shots);
       std::printf("triangulation_split %zu\n", s.split_triangulations);
     }
     if(!o.union_with.empty())
