@@ -263,9 +263,16 @@ private:
   template <class T>
   static auto approx_impl(const T& t, int) -> decltype(t.to_double()) { return t.to_double(); }
   template <class T>
-  static double approx_impl(const T& t, long) { return CGAL::to_double(t); }
+  static auto approx_impl(const T& t, long) -> decltype(double(t.t)) { return t.t; }   // (Double_time)
+  template <class T>
+  static double approx_impl(const T& t, ...) { return CGAL::to_double(t); }
   template <class T>
   static double approx(const T& t) { return approx_impl(t, 0); }
+  std::string face_string(int face) const
+  {
+    const Hds_face& f = hds_.face(face);
+    return (f.is_point ? "p" : "s") + std::to_string(f.p0) + (f.is_point ? "" : "-" + std::to_string(f.p1));
+  }
   std::string list_string() const
   {
     std::string out;
@@ -538,13 +545,90 @@ private:
       events_.pop_back();
       return;
     }
+    if(twice_around(n) && on_other_arm(n)) {
+      events_.pop_back();
+      return;
+    }
     e.node = n;
     e.valid = true;
     nodes_[n].event = ev;
+    CGAL_PMA2_TRACE_MSG("    candidate node " << n << " (" << face_string(fa) << " " << face_string(fb) << " " << face_string(fc)
+                        << ") t=" << approx(e.time));
     heap_.push_back(ev);
     std::push_heap(heap_.begin(), heap_.end(), [this](int x, int y) { return event_after(x, y); });
     ++live_events_;
     stats_.max_queue = (std::max)(stats_.max_queue, live_events_);
+  }
+
+  // Whether the vanishing of node n is a disk that its open edge with a
+  // generator G, which L holds twice, cannot reach.  In a merge that closes
+  // a ring around a hole, the cell of one generator G can touch the
+  // separator from both sides (a small hole near a long edge G: G's cell
+  // wraps around the hole's cells), and L then holds G twice: [G X Y G].
+  // The vanishing times of X (between G and Y) and of Y (between X and G)
+  // are then the same disk, tangent to G on one side of the hole only.  The
+  // open edge between G and a point X is a parabola, of which two arms are
+  // in play; only the vanishing on the arm where that edge is can happen.
+  // Taking the other, the merge went on with L in an order that no later
+  // event could undo (RESULTS.md, "A merge anomaly on real data",
+  // thirty-first session).  The arms are told apart by the side of the
+  // point's foot on G's line, in doubles, and only where the sides are
+  // clear: this runs where L holds a generator twice, nowhere else.
+  CGAL_PMA2_NOINLINE bool on_other_arm(int n) const
+  {
+    const int a = nodes_[n].prev, c = nodes_[n].next;
+    const int fa = nodes_[a].face, fc = nodes_[c].face;
+    int edge, G;
+    if(c != 1 && nodes_[nodes_[c].next].face == fa) {
+      edge = nodes_[a].right_he;   // G X Y G, n = X: the edge G|X
+      G = fa;
+    } else if(a != 0 && nodes_[nodes_[a].prev].face == fc) {
+      edge = nodes_[n].right_he;   // G X Y G, n = Y: the edge Y|G
+      G = fc;
+    } else {
+      return false;
+    }
+    const Hds_face &g = chds().face(G), &x = chds().face(nodes_[n].face);
+    if(g.is_point == x.is_point)
+      return false;                // (a line or a point bisector: no arms)
+    const Hds_face& point = g.is_point ? g : x;
+    const Hds_face& segment = g.is_point ? x : g;
+    if(point.p0 == segment.p0 || point.p0 == segment.p1)
+      return false;                // (the normal at an end of the segment)
+    Point_2 centre;
+    FT radius;
+    if(!traits_.construct_medial_disk_2_object()(site(fa), site(nodes_[n].face), site(fc), centre, radius))
+      return false;
+    const Point_2& start = vertex_point(hds_.source(edge));
+    const Point_2 &p = points_[point.p0], &s0 = points_[segment.p0], &s1 = points_[segment.p1];
+    const double dx = CGAL::to_double(s1.x()) - CGAL::to_double(s0.x());
+    const double dy = CGAL::to_double(s1.y()) - CGAL::to_double(s0.y());
+    auto arm = [&](const Point_2& q) {
+      return (CGAL::to_double(q.x()) - CGAL::to_double(p.x())) * dx + (CGAL::to_double(q.y()) - CGAL::to_double(p.y())) * dy;
+    };
+    const double at_start = arm(start), at_centre = arm(centre);
+    const double clear = 1e-9 * (dx * dx + dy * dy);
+    return (at_start > clear && at_centre < -clear) || (at_start < -clear && at_centre > clear);
+  }
+
+  // Whether L holds one generator on both sides of node n and its
+  // neighbour: [G n Y G] or [G X n G] (n's neighbours are not C+ or C-).
+  CGAL_PMA2_ALWAYS_INLINE bool twice_around(int n) const
+  {
+    const int a = nodes_[n].prev, c = nodes_[n].next;
+    return (c != 1 && nodes_[nodes_[c].next].face == nodes_[a].face) ||
+           (a != 0 && nodes_[nodes_[a].prev].face == nodes_[c].face);
+  }
+
+  // Drops the vanishing of node m where a change two nodes away made L hold
+  // its neighbour's generator twice around it (see on_other_arm()).
+  CGAL_PMA2_ALWAYS_INLINE void recheck_arm(int m)
+  {
+    if(m <= 1)
+      return;   // (C+ or C-)
+    const int ev = nodes_[m].event;
+    if(ev != NO_INDEX && events_[ev].valid && twice_around(m) && on_other_arm(m))
+      invalidate(m);
   }
 
   int top_event()
@@ -638,6 +722,7 @@ private:
     hds_.vertex(s.vertex).halfedge = Hds::twin(h);
     nodes_[n].right_he = h;
     update_candidate(first);
+    recheck_arm(nodes_[first].next);
   }
 
   // Algorithm 1 on the C- side: gold leaves Phi(C-), gnew enters L before C-.
@@ -655,6 +740,7 @@ private:
     nodes_[last].right_he = h;
     nodes_[last].opened = now_index();
     update_candidate(last);
+    recheck_arm(nodes_[last].prev);
   }
 
   // Algorithm 2: the generator of node n leaves L at a new branch point.
@@ -680,6 +766,8 @@ private:
     CGAL_assertion(nodes_[a].face != nodes_[c].face);
     update_candidate(a);
     update_candidate(c);
+    recheck_arm(nodes_[a].prev);
+    recheck_arm(nodes_[c].next);
   }
 
   // ---- termination at Q (Algorithm 4) ----
