@@ -355,11 +355,15 @@ private:
     if(a.input_point != NO_INDEX || b.input_point != NO_INDEX || a.triple[0][0] == NO_INDEX ||
        b.triple[0][0] == NO_INDEX)
       return false;
-    auto site_of = [this](const int p[2]) {
-      return p[0] == p[1] ? Site_2::point(points_[p[0]]) : Site_2::segment(points_[p[0]], points_[p[1]]);
-    };
-    return traits_.equal_medial_disks_2_object()(site_of(a.triple[0]), site_of(a.triple[1]), site_of(a.triple[2]),
-                                                 site_of(b.triple[0]), site_of(b.triple[1]), site_of(b.triple[2]));
+    return traits_.equal_medial_disks_2_object()(triple_site(a.triple[0]), triple_site(a.triple[1]),
+                                                 triple_site(a.triple[2]), triple_site(b.triple[0]),
+                                                 triple_site(b.triple[1]), triple_site(b.triple[2]));
+  }
+
+  // The site of a generator of a vertex's triple (input points p[0], p[1]).
+  Site_2 triple_site(const int p[2]) const
+  {
+    return p[0] == p[1] ? Site_2::point(points_[p[0]]) : Site_2::segment(points_[p[0]], points_[p[1]]);
   }
 
   // A new edge between `left` and `right`, leaving vertex `start`; its end is set later.
@@ -545,7 +549,7 @@ private:
       events_.pop_back();
       return;
     }
-    if(twice_around(n) && on_other_arm(n)) {
+    if(const int twice = twice_around(n); twice != 0 && on_other_arm(n, twice)) {
       events_.pop_back();
       return;
     }
@@ -561,7 +565,8 @@ private:
   }
 
   // Whether the vanishing of node n is a disk that its open edge with a
-  // generator G, which L holds twice, cannot reach.  In a merge that closes
+  // generator G, which L holds twice, cannot reach (`twice`, from
+  // twice_around(n), says on which side of n G is).  In a merge that closes
   // a ring around a hole, the cell of one generator G can touch the
   // separator from both sides (a small hole near a long edge G: G's cell
   // wraps around the hole's cells), and L then holds G twice: [G X Y G].
@@ -571,23 +576,20 @@ private:
   // in play; only the vanishing on the arm where that edge is can happen.
   // Taking the other, the merge went on with L in an order that no later
   // event could undo (RESULTS.md, "A merge anomaly on real data",
-  // thirty-first session).  The arms are told apart by the side of the
-  // point's foot on G's line, in doubles, and only where the sides are
-  // clear: this runs where L holds a generator twice, nowhere else.
-  CGAL_PMA2_NOINLINE bool on_other_arm(int n) const
+  // thirty-first session).  The arms are told apart by the side, along the
+  // segment's line, of the point's foot: the feet of the disk's centre and
+  // of the edge's start vertex are on opposite sides of it.  The traits
+  // decide the three feet and their order exactly (the feet of disks are
+  // the switch times of the merge, along the segment instead of the
+  // separator); where a foot is the point's own, the arm is not clear and
+  // the candidate stays.
+  CGAL_PMA2_NOINLINE bool on_other_arm(int n, int twice) const
   {
     const int a = nodes_[n].prev, c = nodes_[n].next;
     const int fa = nodes_[a].face, fc = nodes_[c].face;
-    int edge, G;
-    if(c != 1 && nodes_[nodes_[c].next].face == fa) {
-      edge = nodes_[a].right_he;   // G X Y G, n = X: the edge G|X
-      G = fa;
-    } else if(a != 0 && nodes_[nodes_[a].prev].face == fc) {
-      edge = nodes_[n].right_he;   // G X Y G, n = Y: the edge Y|G
-      G = fc;
-    } else {
-      return false;
-    }
+    // [G X Y G]: n = X and the edge G|X, or n = Y and the edge Y|G
+    const int edge = twice == G_BEFORE ? nodes_[a].right_he : nodes_[n].right_he;
+    const int G = twice == G_BEFORE ? fa : fc;
     const Hds_face &g = chds().face(G), &x = chds().face(nodes_[n].face);
     if(g.is_point == x.is_point)
       return false;                // (a line or a point bisector: no arms)
@@ -595,29 +597,40 @@ private:
     const Hds_face& segment = g.is_point ? x : g;
     if(point.p0 == segment.p0 || point.p0 == segment.p1)
       return false;                // (the normal at an end of the segment)
-    Point_2 centre;
-    FT radius;
-    if(!traits_.construct_medial_disk_2_object()(site(fa), site(nodes_[n].face), site(fc), centre, radius))
+    const Site_2 line = Site_2::segment(points_[segment.p0], points_[segment.p1]);
+    Time at_centre, at_start;
+    if(!traits_.compute_disk_foot_time_2_object()(line, site(fa), site(nodes_[n].face), site(fc), at_centre))
       return false;
-    const Point_2& start = vertex_point(hds_.source(edge));
-    const Point_2 &p = points_[point.p0], &s0 = points_[segment.p0], &s1 = points_[segment.p1];
-    const double dx = CGAL::to_double(s1.x()) - CGAL::to_double(s0.x());
-    const double dy = CGAL::to_double(s1.y()) - CGAL::to_double(s0.y());
-    auto arm = [&](const Point_2& q) {
-      return (CGAL::to_double(q.x()) - CGAL::to_double(p.x())) * dx + (CGAL::to_double(q.y()) - CGAL::to_double(p.y())) * dy;
-    };
-    const double at_start = arm(start), at_centre = arm(centre);
-    const double clear = 1e-9 * (dx * dx + dy * dy);
-    return (at_start > clear && at_centre < -clear) || (at_start < -clear && at_centre > clear);
+    foot_time_of_vertex(line, hds_.source(edge), at_start);
+    const Time at_point = traits_.compute_foot_time_2_object()(line, points_[point.p0]);
+    const Comparison_result centre = compare_(at_centre, at_point), start = compare_(at_start, at_point);
+    return centre != EQUAL && start != EQUAL && centre != start;
   }
 
-  // Whether L holds one generator on both sides of node n and its
-  // neighbour: [G n Y G] or [G X n G] (n's neighbours are not C+ or C-).
-  CGAL_PMA2_ALWAYS_INLINE bool twice_around(int n) const
+  // The time along `line` of the foot of vertex v: of the disk of its
+  // generators where it has them, exact, or else of its point.
+  void foot_time_of_vertex(const Site_2& line, int v, Time& t) const
+  {
+    const typename Hds::Vertex& x = chds().vertex(v);
+    if(x.input_point == NO_INDEX && x.triple[0][0] != NO_INDEX &&
+       traits_.compute_disk_foot_time_2_object()(line, triple_site(x.triple[0]), triple_site(x.triple[1]),
+                                                 triple_site(x.triple[2]), t))
+      return;
+    t = traits_.compute_foot_time_2_object()(line, vertex_point(v));
+  }
+
+  // Where L holds one generator G on both sides of node n and its
+  // neighbour: G_BEFORE for [G n Y G], G_AFTER for [G X n G], 0 if neither
+  // (n's neighbours are not C+ or C-).
+  enum { G_BEFORE = 1, G_AFTER = 2 };
+  CGAL_PMA2_ALWAYS_INLINE int twice_around(int n) const
   {
     const int a = nodes_[n].prev, c = nodes_[n].next;
-    return (c != 1 && nodes_[nodes_[c].next].face == nodes_[a].face) ||
-           (a != 0 && nodes_[nodes_[a].prev].face == nodes_[c].face);
+    if(c != 1 && nodes_[nodes_[c].next].face == nodes_[a].face)
+      return G_BEFORE;
+    if(a != 0 && nodes_[nodes_[a].prev].face == nodes_[c].face)
+      return G_AFTER;
+    return 0;
   }
 
   // Drops the vanishing of node m where a change two nodes away made L hold
@@ -627,7 +640,9 @@ private:
     if(m <= 1)
       return;   // (C+ or C-)
     const int ev = nodes_[m].event;
-    if(ev != NO_INDEX && events_[ev].valid && twice_around(m) && on_other_arm(m))
+    if(ev == NO_INDEX || !events_[ev].valid)
+      return;
+    if(const int twice = twice_around(m); twice != 0 && on_other_arm(m, twice))
       invalidate(m);
   }
 
