@@ -367,7 +367,7 @@ private:
       number_of_steps_ = region_->number_of_steps();
     }
 
-    if(region_) data_->hds.reserve(2 * data_->points.size() + 16, 4 * data_->points.size() + 16);   // (the boundary driver's start() does)
+    if(region_) data_->hds.reserve_for_points(data_->points.size());   // (the boundary driver's start() does)
     const auto t1 = std::chrono::steady_clock::now();
     if(region_) {
       region_->start();
@@ -507,6 +507,14 @@ bool one_shot_by_boundary_evolution(const std::vector<std::vector<typename Trait
 /// thirty-first session).  Region growing closes its rings along other
 /// diagonals.  Throws `std::runtime_error` if it meets an anomaly too: no
 /// axis is better than a wrong one.
+/// Tests of that way out: while set, every one-shot takes it, as if its
+/// merges had met an anomaly.
+inline std::atomic<bool>& one_shot_way_out_forced()
+{
+  static std::atomic<bool> forced(false);
+  return forced;
+}
+
 template <class Traits>
 void one_shot_by_region_growing(const std::vector<std::vector<typename Traits::Kernel::Point_2> >& rings,
                                 const Traits& traits,
@@ -516,7 +524,7 @@ void one_shot_by_region_growing(const std::vector<std::vector<typename Traits::K
   set_points(data, rings, traits.orientation_2_object());
   Medial_axis_engine<Traits> engine(data, traits);
   Region_growing<Traits> driver(engine);
-  data.hds.reserve(2 * data.points.size() + 16, 4 * data.points.size() + 16);
+  data.hds.reserve_for_points(data.points.size());
   driver.start();
   Boundary_evolution_counts counts;   // (its merge counts; region growing has no cuts)
   for(std::size_t k = 1; k <= driver.number_of_steps(); ++k)
@@ -657,7 +665,7 @@ one_shot_medial_axis(const std::vector<std::vector<typename Traits::Kernel::Poin
       // divide and conquer
       auto evolved = std::make_shared<Data>();
       if(one_shot_by_boundary_evolution(rings, traits, events * double(T) / threads, *evolved, stats)) {
-        if(stats.anomalies != 0) {
+        if(stats.anomalies != 0 || one_shot_way_out_forced().load(std::memory_order_relaxed)) {
           evolved = std::make_shared<Data>();
           one_shot_by_region_growing(rings, traits, *evolved, stats);
         }
@@ -670,7 +678,7 @@ one_shot_medial_axis(const std::vector<std::vector<typename Traits::Kernel::Poin
   }
   if(parts != 0 && probe_limit != 0)   // (the divide and conquer goes on from the triangles probed)
     driver.probe(how.first, probe_seeds, probe_limit);
-  data->hds.reserve(2 * data->points.size() + 16, 4 * data->points.size() + 16);
+  data->hds.reserve_for_points(data->points.size());
   const Divide_and_conquer_counts counts = divide_and_conquer(driver, how.first, how.second);
   stats.merge_seconds = seconds_since(t0);
   copy_counts(stats, counts);
@@ -678,7 +686,8 @@ one_shot_medial_axis(const std::vector<std::vector<typename Traits::Kernel::Poin
   stats.parts_seconds_sum = counts.parts_seconds_sum;
   stats.parts_seconds_max = counts.parts_seconds_max;
   stats.join_seconds = counts.join_seconds;
-  if(counts.anomalies != 0) {   // (a bug of the merge: see one_shot_by_region_growing())
+  if(counts.anomalies != 0 || one_shot_way_out_forced().load(std::memory_order_relaxed)) {
+    // (a bug of the merge: see one_shot_by_region_growing())
     auto redone = std::make_shared<Data>();
     one_shot_by_region_growing(rings, traits, *redone, stats);
     stats.merge_seconds = seconds_since(t0);

@@ -1114,10 +1114,22 @@ void regression_tests(Checker<Traits>& checker, const Options&)
     CHECK(stats.anomalies == 0 && stats.region_growing_one_shots == 0,
           f << ": the default one-shot met " << stats.anomalies << " anomalies ("
             << stats.region_growing_one_shots << " computed again)");
+    // the one-shot's way out, forced: the axis again, by region growing
+    {
+      struct Forced {
+        Forced() { CGAL::Progressive_medial_axes::internal::one_shot_way_out_forced() = true; }
+        ~Forced() { CGAL::Progressive_medial_axes::internal::one_shot_way_out_forced() = false; }
+      } forced;
+      CGAL::Progressive_medial_axis_statistics redone;
+      const auto again = CGAL::medial_axis_2(rings, Traits(), CGAL::CHECK_INPUT, &redone);
+      checker.compare(again, "one-shot's way out", true, f, rings);
+      CHECK(redone.region_growing_one_shots == 1 && redone.anomalies == 0,
+            f << ": the forced way out was not taken (" << redone.region_growing_one_shots << ")");
+    }
     ++count;
   }
   std::cout << "regressions: " << count << " shapes, whole, " << steps << " steps (" << skipped
-            << " where the oracle failed), and the default one-shot\n";
+            << " where the oracle failed), the default one-shot and its way out\n";
 }
 
 // The counter of the exact-decision traits' computations in 128-bit

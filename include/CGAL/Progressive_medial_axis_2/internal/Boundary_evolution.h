@@ -151,7 +151,7 @@ private:
     auto& data = engine_.data();
     const std::size_t n = alive_.size();
     data.hds = typename Engine::Hds();
-    data.hds.reserve(2 * n + 16, 4 * n + 16);
+    data.hds.reserve_for_points(n);
     // the input points alone (without those a triangulation added at T's)
     data.points.resize(n);
     data.info = info_;

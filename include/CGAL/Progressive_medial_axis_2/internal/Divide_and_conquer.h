@@ -311,7 +311,7 @@ public:
       run_part([&] {
         const bool own = p > 0 && !one_thread;
         Hds& hds = own ? structures[p] : engine_.hds();
-        if(own) hds.reserve(2 * size_[p] + 16, 4 * size_[p] + 16);
+        if(own) hds.reserve_for_points(size_[p]);
         Part_progress progress;
         if(p < probed_.size() && probed_[p])
           progress = take_probed(p, hds, part_counts[p]);

@@ -370,6 +370,10 @@ public:
     return o;
   }
 
+  /// Reserves room for the axis of `points` input points: about 2 faces
+  /// and 4 vertices a point.
+  void reserve_for_points(std::size_t points) { reserve(2 * points + 16, 4 * points + 16); }
+
   void reserve(std::size_t faces, std::size_t vertices)
   {
     faces_.reserve(faces);
