@@ -302,14 +302,17 @@ private:
     // its cycle that arrives at w.
     int h_end = Hds::twin(hds_.next(b));
     int Fk = hds_.face_of(h_end);
+    int flat_after_w = NO_INDEX;   // the edge after w, where it continues e2 on its line
     if(is_point_at(Fk, W)) {
       const int out_of_w = hds_.next(h_end);  // the normal between w's cell and the edge after w
       const int B = face_across(out_of_w);
       require(!chds().face(B).is_point && chds().face(B).p0 == W);
-      if(orientation(points_[V], points_[W], points_[chds().face(B).p1]) != RIGHT_TURN) {
+      const Orientation turn = orientation(points_[V], points_[W], points_[chds().face(B).p1]);
+      if(turn != RIGHT_TURN) {
         gone_faces.push_back(Fk);
         h_end = Hds::twin(out_of_w);
         Fk = B;
+        if(turn == COLLINEAR) flat_after_w = B;
       }
     }
     // every vertex and edge of a cell that goes is gone (but the corners u, w)
@@ -383,11 +386,20 @@ private:
     const int vV = hds_.new_vertex(points_[V], FT(0), V);
 
     // The generator of each crossing: e1, v or e2, in this order along the front.
+    // Where w becomes flat (the edge B after w continues e2 on its line),
+    // a crossing on an edge of B's cell is e2's: B's cell lies beyond the
+    // normal at w, v's beyond the normal to e2 at v, e2's cell between
+    // them.  The test of v below cannot tell: the disk tangent to B's line
+    // through v touches the line at v, outside B, and its foot on e2 is
+    // v's own (a polygon of land-10m whose cut made a hole's vertex flat
+    // took v there: RESULTS.md, thirty-second session).
     std::vector<int>& gen = gen_;
     gen.assign(std::size_t(k), 0);
     int g = 0;
     for(int i = 0; i < k; ++i) {
       const int h = crossings[std::size_t(i)];
+      if(flat_after_w != NO_INDEX && (hds_.face_of(h) == flat_after_w || face_across(h) == flat_after_w))
+        g = 2;
       const Site_2 F = site(hds_.face_of(h)), G = site(face_across(h));
       if(g == 0) {
         Time t;
