@@ -29,6 +29,7 @@
 #include <CGAL/Polygon_2.h>
 #include <CGAL/Polygon_with_holes_2.h>
 
+#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <cstddef>
@@ -497,6 +498,14 @@ bool one_shot_by_boundary_evolution(const std::vector<std::vector<typename Trait
   return true;
 }
 
+/// For tests of the one-shot's way out below (one_shot_by_region_growing()):
+/// while set, every one-shot takes it, as if its merges had met an anomaly.
+inline std::atomic<bool>& one_shot_way_out_forced()
+{
+  static std::atomic<bool> forced(false);
+  return forced;
+}
+
 /// The axis of `rings` by region growing, all steps done, into `data`
 /// (empty): the one-shot's way out where the divide and conquer or boundary
 /// evolution met an anomaly.  Such an anomaly is a bug, not a rounding
@@ -507,14 +516,6 @@ bool one_shot_by_boundary_evolution(const std::vector<std::vector<typename Trait
 /// thirty-first session).  Region growing closes its rings along other
 /// diagonals.  Throws `std::runtime_error` if it meets an anomaly too: no
 /// axis is better than a wrong one.
-/// Tests of that way out: while set, every one-shot takes it, as if its
-/// merges had met an anomaly.
-inline std::atomic<bool>& one_shot_way_out_forced()
-{
-  static std::atomic<bool> forced(false);
-  return forced;
-}
-
 template <class Traits>
 void one_shot_by_region_growing(const std::vector<std::vector<typename Traits::Kernel::Point_2> >& rings,
                                 const Traits& traits,
