@@ -731,8 +731,8 @@ thread, one after the other, until the parts left would take about 4 ms
 or more there, and builds those in parallel.  Without oneTBB it runs
 sequentially.  The result is the same in all cases.  For a polygon of
 65,536 points or more, it gives the memory that glibc keeps free back to
-the system (`malloc_trim()`) after the triangulation and after the parts
-that it moves into the result (every 8,192 of their triangles).
+the system (`malloc_trim()`) after the triangulation, once all parts
+have started and after the last part moved into the result.
 
 If `statistics` is given, it receives the input size, the times of the
 phases and the counts of the merges and their events.

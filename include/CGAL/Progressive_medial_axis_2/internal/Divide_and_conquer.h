@@ -162,15 +162,9 @@ enum Parts_mode { PARTS_SEQUENTIAL, PARTS_PARALLEL, PARTS_PARALLEL_IF_WORTH_IT }
 constexpr double min_parallel_seconds = 0.004;
 
 /// From this many input points on, a one-shot gives the memory it freed back
-/// to the system (release_free_memory()) after the triangulation and after
-/// the parts moved into the result, each time parts of
-/// `min_release_triangles` triangles or more have been moved since the last
-/// time and after the last part.  With many small parts, a release after
-/// each one cost 5 ms of the 35 ms join of a 128,000-vertex outline; one
-/// every 8,192 triangles saves that and keeps its peak (66 MB), one every
-/// 32,768 raised the peak to 73 MB.
+/// to the system (release_free_memory()) after the triangulation, once all
+/// its parts have started, and after the last part moved into the result.
 constexpr std::size_t min_release_points = 65536;
-constexpr std::size_t min_release_triangles = 8192;
 
 /// Whether a one-shot of `min_release_points` or more gives the memory it
 /// freed back to the system (on by default).  A program that goes on
@@ -284,9 +278,27 @@ public:
     // the parts built, the next one to move, and whether a thread is moving
     // parts (under `moving_mutex`)
     std::vector<char> built(P, 0);
-    std::size_t next_to_move = 1, moved_triangles = 0;
+    std::size_t next_to_move = 1;
     bool moving = false;
     std::mutex moving_mutex;
+    // The next part to start.  Parts start in their order, so that a part
+    // is moved soon after it is built and few wait: with oneTBB's
+    // parallel_for over the parts, a second thread took the second half of
+    // them, which waited until the first thread had built the first half.
+    std::atomic<std::size_t> next_to_start{0};
+    // The structures of parts moved, emptied but with their arrays, for the
+    // parts still to start (under `pool_mutex`), each reserved for the
+    // largest part: a part built in one takes no new memory.  A one-shot of
+    // many points gave the memory that parts freed back to the system after
+    // every 8,192 triangles moved (`malloc_trim()`), and the next parts took
+    // it again, one page fault per page: on two threads, 10% to 13% of the
+    // time of a 128,000-vertex outline (RESULTS.md, "The parts' memory
+    // reused", thirty-third session).  Now the memory is given back once all
+    // parts have started and once they are all moved.
+    std::vector<Hds> pool;
+    std::mutex pool_mutex;
+    bool pool_released = false;   // (only the thread moving parts sets it)
+    const std::size_t largest = *std::max_element(size_.begin(), size_.end());
     auto move_built_parts = [&](std::size_t p) {
       std::unique_lock<std::mutex> lock(moving_mutex);
       built[p] = 1;
@@ -295,11 +307,18 @@ public:
       while(built[0] && next_to_move < P && built[next_to_move]) {
         const std::size_t q = next_to_move;
         lock.unlock();   // (only this thread touches the result's structure)
-        offsets[q] = engine_.hds().append(structures[q]);
-        moved_triangles += size_[q];
-        if(moved_triangles >= min_release_triangles || q + 1 == P) {
+        const bool starting = next_to_start.load() < P;
+        offsets[q] = engine_.hds().append(structures[q], starting);
+        if(starting) {
+          std::lock_guard<std::mutex> pool_lock(pool_mutex);
+          pool.push_back(std::move(structures[q]));
+        } else if(!pool_released || q + 1 == P) {
+          if(!pool_released) {
+            std::lock_guard<std::mutex> pool_lock(pool_mutex);
+            free_vector(pool);
+            pool_released = true;
+          }
           release_free_memory(engine_.points().size());
-          moved_triangles = 0;
         }
         lock.lock();
         ++next_to_move;
@@ -311,7 +330,16 @@ public:
       run_part([&] {
         const bool own = p > 0 && !one_thread;
         Hds& hds = own ? structures[p] : engine_.hds();
-        if(own) hds.reserve_for_points(size_[p]);
+        if(own) {
+          {
+            std::lock_guard<std::mutex> pool_lock(pool_mutex);
+            if(!pool.empty()) {
+              hds = std::move(pool.back());
+              pool.pop_back();
+            }
+          }
+          hds.reserve_for_points(largest);
+        }
         Part_progress progress;
         if(p < probed_.size() && probed_[p])
           progress = take_probed(p, hds, part_counts[p]);
@@ -323,7 +351,6 @@ public:
         move_built_parts(p);
       part_seconds[p] = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     };
-    std::size_t first = 0;
     bool parallel = !one_thread;
 #ifdef CGAL_PMA2_USE_TBB
     if(parallel && mode == PARTS_PARALLEL_IF_WORTH_IT && !tbb_running()) {
@@ -332,19 +359,24 @@ public:
       parallel = false;
       double seconds = 0;
       std::size_t done = 0;
-      while(first < P && !parallel) {
-        build(first);
-        seconds += part_seconds[first];
-        done += size_[first];
-        ++first;
-        parallel = first < P && seconds * double(triangles_.size() - done) >= min_parallel_seconds * double(done);
+      while(next_to_start < P && !parallel) {
+        const std::size_t p = next_to_start++;
+        build(p);
+        seconds += part_seconds[p];
+        done += size_[p];
+        parallel = next_to_start < P && seconds * double(triangles_.size() - done) >= min_parallel_seconds * double(done);
       }
     }
-    if(parallel)
-      tbb::parallel_for(first, P, [&](std::size_t p) { build(p); }, tbb::simple_partitioner());
-    else
+    if(parallel) {
+      const std::size_t workers = (std::min)(arena_threads(), P - next_to_start);
+      tbb::parallel_for(std::size_t(0), workers, [&](std::size_t) {
+        for(std::size_t p; (p = next_to_start++) < P;)
+          build(p);
+      }, tbb::simple_partitioner());
+    } else
 #endif
-      for(std::size_t p = first; p < P; ++p) build(p);
+      for(std::size_t p; (p = next_to_start++) < P;)
+        build(p);
     (void)parallel;
     for(const auto& c : part_counts) counts.add(c);
     counts.parts = P;

@@ -333,9 +333,14 @@ public:
   /// the returned offsets.  The cost is linear in the size of `other`.
   /// Neither structure may be journaling.  Each array of `other` is freed
   /// as soon as it is copied: the two structures hold one array twice at
-  /// most, not all of `other`.
-  Offsets append(Halfedge_structure& other)
+  /// most, not all of `other`.  With `keep_other`, `other` is emptied
+  /// instead, keeping its arrays for the next structure built in it.
+  Offsets append(Halfedge_structure& other, bool keep_other = false)
   {
+    auto release = [keep_other](auto& v) {
+      if(keep_other) v.clear();
+      else free_vector(v);
+    };
     CGAL_precondition(!journal_ && !other.journal_);
     require_indexable(halfedges_.size() + other.halfedges_.size());
     const Offsets o{int(halfedges_.size()), int(vertices_.size()), int(faces_.size())};
@@ -348,15 +353,15 @@ public:
       shift(h.face, o.face);   // OUTSIDE and DELETED stay
       halfedges_.push_back(h);
     }
-    free_vector(other.halfedges_);
+    release(other.halfedges_);
     zero_length_.insert(zero_length_.end(), other.zero_length_.begin(), other.zero_length_.end());
-    free_vector(other.zero_length_);
+    release(other.zero_length_);
     vertices_.reserve(vertices_.size() + other.vertices_.size());
     for(Vertex& v : other.vertices_) {
       if(v.halfedge >= 0) v.halfedge = v.halfedge + o.halfedge;   // (a bit-field)
       vertices_.push_back(std::move(v));
     }
-    free_vector(other.vertices_);
+    release(other.vertices_);
     faces_.reserve(faces_.size() + other.faces_.size());
     for(Face f : other.faces_) {
       shift(f.halfedge, o.halfedge);
@@ -366,8 +371,25 @@ public:
     for(int v : other.free_vertices_) free_vertices_.push_back(v + o.vertex);
     for(int f : other.free_faces_) free_faces_.push_back(f + o.face);
     for(int v : other.pending_) pending_.push_back(v + o.vertex);
-    other = Halfedge_structure();
+    if(keep_other)
+      other.clear();
+    else
+      other = Halfedge_structure();
     return o;
+  }
+
+  /// Empties the structure, keeping the memory of its arrays.
+  void clear()
+  {
+    CGAL_precondition(!journal_);
+    halfedges_.clear();
+    vertices_.clear();
+    faces_.clear();
+    zero_length_.clear();
+    free_edges_.clear();
+    free_vertices_.clear();
+    free_faces_.clear();
+    pending_.clear();
   }
 
   /// Reserves room for the axis of `points` input points: about 2 faces
