@@ -506,6 +506,13 @@ inline std::atomic<bool>& one_shot_way_out_forced()
   return forced;
 }
 
+/// Whether a one-shot whose merges met `anomalies` anomalies takes the way
+/// out below.
+inline bool one_shot_takes_way_out(std::size_t anomalies)
+{
+  return anomalies != 0 || one_shot_way_out_forced().load(std::memory_order_relaxed);
+}
+
 /// The axis of `rings` by region growing, all steps done, into `data`
 /// (empty): the one-shot's way out where the divide and conquer or boundary
 /// evolution met an anomaly.  Such an anomaly is a bug, not a rounding
@@ -666,7 +673,7 @@ one_shot_medial_axis(const std::vector<std::vector<typename Traits::Kernel::Poin
       // divide and conquer
       auto evolved = std::make_shared<Data>();
       if(one_shot_by_boundary_evolution(rings, traits, events * double(T) / threads, *evolved, stats)) {
-        if(stats.anomalies != 0 || one_shot_way_out_forced().load(std::memory_order_relaxed)) {
+        if(one_shot_takes_way_out(stats.anomalies)) {
           evolved = std::make_shared<Data>();
           one_shot_by_region_growing(rings, traits, *evolved, stats);
         }
@@ -687,7 +694,7 @@ one_shot_medial_axis(const std::vector<std::vector<typename Traits::Kernel::Poin
   stats.parts_seconds_sum = counts.parts_seconds_sum;
   stats.parts_seconds_max = counts.parts_seconds_max;
   stats.join_seconds = counts.join_seconds;
-  if(counts.anomalies != 0 || one_shot_way_out_forced().load(std::memory_order_relaxed)) {
+  if(one_shot_takes_way_out(counts.anomalies)) {
     // (a bug of the merge: see one_shot_by_region_growing())
     auto redone = std::make_shared<Data>();
     one_shot_by_region_growing(rings, traits, *redone, stats);

@@ -521,6 +521,25 @@ void threads()
   CHECK(one_shot.number_of_edges() == progressive.medial_axis().number_of_edges() &&
           one_shot.number_of_vertices() == progressive.medial_axis().number_of_vertices(),
         "the parallel one-shot axis has the size of the progressive one");
+#ifdef CGAL_LINKED_WITH_TBB
+  // in a task arena of two threads the parts run in parallel from the
+  // start: parts built in structures of their own, moved into the result
+  // and their structures reused for the next parts
+  const auto large = pma_test::random_polygon_with_holes(8, 400, 60);
+  CGAL::Progressive_medial_axis_2<> large_progressive(large);
+  large_progressive.refine_all();
+  std::size_t edges = 0, vertices = 0;
+  CGAL::Progressive_medial_axis_statistics stats;
+  tbb::task_arena(2).execute([&] {
+    const auto a = CGAL::medial_axis_2(large, CGAL::Progressive_medial_axis_traits_2<CGAL::Epick>(),
+                                       CGAL::CHECK_INPUT, &stats);
+    edges = a.number_of_edges();
+    vertices = a.number_of_vertices();
+  });
+  CHECK(stats.parts >= 4 && edges == large_progressive.medial_axis().number_of_edges() &&
+          vertices == large_progressive.medial_axis().number_of_vertices(),
+        "the one-shot in parallel parts (" << stats.parts << ") has the size of the progressive axis");
+#endif
 }
 
 } // namespace
