@@ -111,6 +111,7 @@ template <>
 struct Oriented_line_hook<Small_one_root> {
   struct Entry {   // (default value: the segment from (0, 0) to (0, 0), unused)
     static constexpr unsigned max_bits = 8;
+    static constexpr std::size_t misses_per_page = 8;   // (exact, in 128-bit rationals)
     Small_rational key[4];
     Line_nt<Small_one_root> line;
     bool holds(const Small_rational* c) const
@@ -1804,6 +1805,8 @@ private:
   template <class NT>
   struct Disk_entry {
     static constexpr unsigned max_bits = 8;
+    // (a disk in intervals, or exact in one-root numbers: more costly)
+    static constexpr std::size_t misses_per_page = std::is_same<NT, Interval_nt<false> >::value ? 16 : 4;
     Triple_key key;
     Kept_disk<NT> disk;
     bool holds(const Triple_key& k) const { return key == k; }

@@ -22,6 +22,7 @@
 #include <CGAL/number_utils.h>
 #include <CGAL/Uncertain.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstdlib>
@@ -225,12 +226,20 @@ Line_nt<NT> oriented_line(const Site_nt<NT>& s)
 /// come back in many constructions, and the same triples in many
 /// decisions.  `Entry` is default-constructible, its default value is an
 /// unused entry, and it has `max_bits` (the table's largest size, as a
-/// power of two), `holds(key)`, `value()` and `set(key, value)`.  The table starts with 64 entries and grows by
-/// a factor of four as misses come (a new table each time, the old entries
+/// power of two), `misses_per_page` (below), `holds(key)`, `value()` and
+/// `set(key, value)`.  The table starts with 64 entries and grows by a
+/// factor of four as misses come (a new table each time, the old entries
 /// dropped), so that a small polygon touches a few pages only: a table of
 /// 4,096 interval lines at once was a third of the page faults of a polygon
 /// of 268 vertices, and one of 256 (20 KB) still 2% of the first call on a
 /// glyph of 14 vertices (RESULTS.md, "The cold first call of tiny glyphs").
+/// It grows once the misses since it was made are at least twice its
+/// entries and at least `misses_per_page` for each 4 KB page of the larger
+/// table: the misses a page fault is worth, in computations of the entry's
+/// value (a fault cost 8 to 16 microseconds on the 2-core VM of RESULTS.md).
+/// On integer grids of 700 to 2,000 vertices, growing at twice the entries
+/// alone was 13% to 23% of the process's page faults (RESULTS.md, "Page
+/// faults of small one-shots", thirty-fourth session).
 /// Entries of plain data come zeroed from calloc, whose fresh pages the
 /// system gives zeroed.
 template <class Entry>
@@ -250,7 +259,8 @@ public:
       return e->value();
     const auto value = compute();
     // (once there were many misses, in a larger table)
-    if(++misses_ > (std::size_t(2) << bits_) && bits_ < Entry::max_bits && make(bits_ + 2))
+    if(++misses_ > (std::max)(std::size_t(2) << bits_, (sizeof(Entry) << (bits_ + 2)) / 4096 * Entry::misses_per_page) &&
+       bits_ < Entry::max_bits && make(bits_ + 2))
       e = &entries_[std::size_t(hash >> (64 - bits_))];
     e->set(key, value);
     return value;
@@ -297,6 +307,7 @@ struct Oriented_line_hook<Interval_nt<false> > {
   typedef Interval_nt<false> I;
   struct Entry {   // (plain data: all zeros is an unused entry)
     static constexpr unsigned max_bits = 12;
+    static constexpr std::size_t misses_per_page = 128;   // (a line: a square root and a division)
     double key[4];   // ax, ay, bx, by
     double bounds[6];   // nx, ny, k: inf and sup of each
     bool holds(const double* c) const { return key[0] == c[0] && key[1] == c[1] && key[2] == c[2] && key[3] == c[3]; }
