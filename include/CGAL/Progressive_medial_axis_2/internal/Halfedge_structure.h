@@ -337,9 +337,9 @@ public:
   /// instead, keeping its arrays for the next structure built in it.
   Offsets append(Halfedge_structure& other, bool keep_other = false)
   {
+    // (kept arrays are emptied by other.clear() at the end)
     auto release = [keep_other](auto& v) {
-      if(keep_other) v.clear();
-      else free_vector(v);
+      if(!keep_other) free_vector(v);
     };
     CGAL_precondition(!journal_ && !other.journal_);
     require_indexable(halfedges_.size() + other.halfedges_.size());
