@@ -649,9 +649,10 @@ one_shot_medial_axis(const std::vector<std::vector<typename Traits::Kernel::Poin
   } else {   // (where the sides could not be finished, the whole polygon from its points)
     triangles = triangulation->finish(*data);
   }
+  // (the memory they free is given back to the system once the divide and
+  // conquer has prepared its parts: see Divide_and_conquer::run())
   split.reset();
   triangulation.reset();
-  release_free_memory(data->points.size());
   stats.triangles = triangles.size();
   stats.triangulation_seconds = stats.overlapped_seconds + split_seconds + seconds_since(t0);
 
@@ -671,6 +672,7 @@ one_shot_medial_axis(const std::vector<std::vector<typename Traits::Kernel::Poin
       // boundary evolution, unless it does more work than the divide and
       // conquer would on these threads (at the probe's rate): then the
       // divide and conquer
+      release_free_memory(data->points.size());
       auto evolved = std::make_shared<Data>();
       if(one_shot_by_boundary_evolution(rings, traits, events * double(T) / threads, *evolved, stats)) {
         if(one_shot_takes_way_out(stats.anomalies)) {
@@ -738,8 +740,9 @@ thread, one after the other, until the parts left would take about 4 ms
 or more there, and builds those in parallel.  Without oneTBB it runs
 sequentially.  The result is the same in all cases.  For a polygon of
 65,536 points or more, it gives the memory that glibc keeps free back to
-the system (`malloc_trim()`) after the triangulation, once all parts
-have started and after the last part moved into the result.
+the system (`malloc_trim()`) once the triangulation is freed and the
+parts are prepared, once all parts have started, and after the last part
+moved into the result.
 
 If `statistics` is given, it receives the input size, the times of the
 phases and the counts of the merges and their events.

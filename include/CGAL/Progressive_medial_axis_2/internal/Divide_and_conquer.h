@@ -41,13 +41,18 @@
 //      as it and the parts before it are built, by the thread that built
 //      the last of them, while the other threads go on building parts (one
 //      copy of each part's records, linear in its size; no structure is
-//      shared between threads, so no merge takes a lock); once all are in,
-//      the half-edges of the diagonals between parts are read, the arrays
-//      of the triangles freed, and the parts merged along the cut
-//      diagonals, each joining two components;
-//   3. the hole-closing diagonals between two parts are merged last: both
-//      sides of each are then the same shape, and the merge closes a ring
-//      around a hole.
+//      shared between threads, so no merge takes a lock); that thread then
+//      merges the part with the parts before it: along the cut diagonal
+//      above its root, to the part of the root's parent (an earlier part:
+//      parts are numbered in the breadth-first order of their roots), which
+//      joins two components, then along the hole-closing diagonals between
+//      it and earlier parts.  Parts 0 to q are connected through their cut
+//      diagonals (within each connected part of the interior), so both
+//      sides of such a diagonal are then the same shape, and the merge
+//      closes a ring around a hole.  On one thread, the parts are merged
+//      so, part after part, once all are built;
+//   3. the vertices made by these merges are resolved (their disks
+//      constructed), and the arrays of the triangles freed.
 // Between merges a shape may touch itself at a polygon vertex (the fan of
 // triangles around the vertex is interrupted by a diagonal not merged
 // yet); every corner of such a vertex is a vertex of the structure of its
@@ -162,8 +167,9 @@ enum Parts_mode { PARTS_SEQUENTIAL, PARTS_PARALLEL, PARTS_PARALLEL_IF_WORTH_IT }
 constexpr double min_parallel_seconds = 0.004;
 
 /// From this many input points on, a one-shot gives the memory it freed back
-/// to the system (release_free_memory()) after the triangulation, once all
-/// its parts have started, and after the last part moved into the result.
+/// to the system (release_free_memory()) once its parts are prepared (the
+/// triangulation freed), once all its parts have started, and after the
+/// last part moved into the result.
 constexpr std::size_t min_release_points = 65536;
 
 /// Whether a one-shot of `min_release_points` or more gives the memory it
@@ -253,6 +259,14 @@ public:
       return counts;
     if(!prepared_ || prepared_parts_ != parts)
       prepare(parts);
+    // The memory that the triangulation freed is given back to the system
+    // only now, once the arrays of the spanning tree and of the parts
+    // (about 33 bytes a triangle) have taken pages of it: given back before,
+    // those pages were faulted in again, zeroed by the system, and the
+    // probe and prepare() took 17 ms of a 128,000-vertex outline on the
+    // 2-core VM of RESULTS.md, against 7 ms now ("Page faults and the
+    // sequential phases", thirty-fourth session).
+    release_free_memory(engine_.points().size());
     const std::size_t P = roots_.size();
 
     // 1. the parts.  On one thread they are built one after the other in
@@ -271,6 +285,30 @@ public:
 #else
     one_thread = true;
 #endif
+    // The diagonals between parts, each merged once both its parts are in
+    // the result's structure.  For each part in turn: the cut diagonal to
+    // the part of its root's parent (an earlier part: parts are numbered in
+    // the breadth-first order of their roots), then the hole-closing
+    // diagonals between it and earlier parts (those inside a part are
+    // merged by the part).  Parts 0 to q are connected through their cut
+    // diagonals, so a hole-closing diagonal of part q closes a ring of that
+    // region, as in region growing.  On several threads the diagonals of
+    // part q are merged as soon as it is moved, while other threads go on
+    // building parts: merged after all parts, they and the vertices they
+    // made had been the last 11 ms of a 128,000-vertex outline and the last
+    // 92 ms of a plate of 100,000 holes, on one thread while the other
+    // waited (RESULTS.md, "Page faults and the sequential phases",
+    // thirty-fourth session).
+    std::vector<std::vector<std::array<int, 2> > > joins(P);
+    for(std::size_t p = 1; p < P; ++p) {
+      const int r = roots_[p];
+      if(parent_[std::size_t(r)] != NO_INDEX)   // (the first part of a connected part has none)
+        joins[p].push_back({{parent_[std::size_t(r)], r}});
+    }
+    for(const auto& d : off_tree_) {
+      const int a = part_[std::size_t(d[0])], b = part_[std::size_t(d[1])];
+      if(a != b) joins[std::size_t((std::max)(a, b))].push_back(d);
+    }
     std::vector<Hds> structures(P);
     std::vector<Divide_and_conquer_counts> part_counts(P);
     std::vector<double> part_seconds(P, 0);
@@ -299,6 +337,18 @@ public:
     std::mutex pool_mutex;
     bool pool_released = false;   // (only the thread moving parts sets it)
     const std::size_t largest = *std::max_element(size_.begin(), size_.end());
+    // merges the diagonals of part q (it and the parts before it are in the
+    // result's structure; their half-edges were numbered in their part's
+    // structure, `offsets` says where it went)
+    auto merge_joins = [&](std::size_t q, Divide_and_conquer_counts& c) {
+      for(const auto& d : joins[q]) {
+        const int h0 = side(d[0], d[1]), h1 = side(d[1], d[0]);
+        CGAL_assertion(h0 != NO_INDEX && h1 != NO_INDEX);
+        c.add(engine_.merge(h0 + offsets[std::size_t(part_[std::size_t(d[0])])].halfedge,
+                            h1 + offsets[std::size_t(part_[std::size_t(d[1])])].halfedge, c));
+      }
+    };
+    Divide_and_conquer_counts join_counts;   // (only the thread moving parts adds)
     auto move_built_parts = [&](std::size_t p) {
       std::unique_lock<std::mutex> lock(moving_mutex);
       built[p] = 1;
@@ -320,6 +370,10 @@ public:
           }
           release_free_memory(engine_.points().size());
         }
+        run_part([&] {
+          merge_joins(q, join_counts);
+          engine_.resolve_pending();   // (the vertices those merges made)
+        });
         lock.lock();
         ++next_to_move;
       }
@@ -386,25 +440,13 @@ public:
     }
     const auto t_join = std::chrono::steady_clock::now();
 
-    // 2. the diagonals between parts, in the order of their merges: the cut
-    // diagonals, then the hole-closing diagonals between two parts (those
-    // inside a part were merged by the part).  Their half-edges are read
-    // now (numbered in their part's own structure: `offsets` gives where
-    // it went), and the arrays of the triangles freed.
-    struct Join {
-      int halfedge[2], part[2];
-    };
-    std::vector<Join> joins;
-    auto join = [&](int t, int u) {
-      joins.push_back({{side(t, u), side(u, t)}, {part_[std::size_t(t)], part_[std::size_t(u)]}});
-    };
-    for(std::size_t p = 1; p < P; ++p) {
-      const int r = roots_[p];
-      if(parent_[std::size_t(r)] != NO_INDEX)   // (the first part of a connected part has none)
-        join(parent_[std::size_t(r)], r);
-    }
-    for(const auto& d : off_tree_)
-      if(part_[std::size_t(d[0])] != part_[std::size_t(d[1])]) join(d[0], d[1]);
+    // 2. on one thread, the diagonals between parts (on several, the
+    // thread that moved each part merged them), then the arrays of the
+    // triangles freed
+    if(one_thread)
+      for(std::size_t q = 1; q < P; ++q) merge_joins(q, counts);
+    CGAL_assertion(one_thread || next_to_move == P);
+    counts.add(join_counts);
     free_vector(parent_);
     free_vector(order_);
     free_vector(part_);
@@ -413,15 +455,6 @@ public:
     free_vector(added_);
     free_vector(off_tree_);
     probed_.clear();
-
-    // 3. the merges along the diagonals between parts (all parts are in
-    // the result's structure now)
-    CGAL_assertion(one_thread || next_to_move == P);
-    for(const Join& j : joins) {
-      CGAL_assertion(j.halfedge[0] != NO_INDEX && j.halfedge[1] != NO_INDEX);
-      counts.add(engine_.merge(j.halfedge[0] + offsets[std::size_t(j.part[0])].halfedge,
-                               j.halfedge[1] + offsets[std::size_t(j.part[1])].halfedge, counts));
-    }
     engine_.resolve_pending();
     counts.join_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t_join).count();
     return counts;

@@ -237,9 +237,10 @@ Line_nt<NT> oriented_line(const Site_nt<NT>& s)
 /// entries and at least `misses_per_page` for each 4 KB page of the larger
 /// table: the misses a page fault is worth, in computations of the entry's
 /// value (a fault cost 8 to 16 microseconds on the 2-core VM of RESULTS.md).
-/// On integer grids of 700 to 2,000 vertices, growing at twice the entries
-/// alone was 13% to 23% of the process's page faults (RESULTS.md, "Page
-/// faults of small one-shots", thirty-fourth session).
+/// On grid polygons and Koch snowflakes of 670 to 4,700 vertices, growing
+/// at twice the entries alone cost the process 8% to 17% more page faults
+/// (RESULTS.md, "Page faults and the sequential phases", thirty-fourth
+/// session).
 /// Entries of plain data come zeroed from calloc, whose fresh pages the
 /// system gives zeroed.
 template <class Entry>
