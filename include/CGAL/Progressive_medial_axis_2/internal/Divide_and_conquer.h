@@ -158,13 +158,22 @@ enum Parts_mode { PARTS_SEQUENTIAL, PARTS_PARALLEL, PARTS_PARALLEL_IF_WORTH_IT }
 /// builds its parts on the calling thread, one after the other, until the
 /// parts left would take at least this long there (their triangles at the
 /// rate of the parts built); those it builds in parallel.  Starting oneTBB
-/// costs a process about 0.8 ms (its scheduler, its allocator, a worker
-/// thread) and a worker meets the code cold: on a polygon of 268 vertices,
-/// the whole tool took 5.0 ms on two threads and 4.0 ms without oneTBB; on
-/// integer grids of 800 vertices, and on polygons of a few hundred
-/// cocircular vertices, two threads are faster (RESULTS.md, "Start-up of
-/// small runs", third session).
-constexpr double min_parallel_seconds = 0.004;
+/// costs the calling thread its global start-up (about 0.8 ms a process in
+/// the third session; `task_arena::initialize()` alone took 2.0 to 2.3 ms
+/// in the thirty-fifth, on the 2-core VM of RESULTS.md), and the worker
+/// then meets the code, the heap and the per-thread tables of constructions
+/// cold.  On four polygons of a few
+/// hundred vertices of the degenerate table (files under 16 KB, where the
+/// tool calls the one-shot outside its arena), which started oneTBB after
+/// 4 ms of parts, the tool took 2% to 20% less time without oneTBB (a
+/// nested Koch snowflake of 384 vertices, whose parts took 11 ms in all:
+/// 0.80).  With 16 ms, the snowflake and a 320-vertex polygon with holes run
+/// on one thread (0.84 and 0.89 of the time); two integer grids of 670 and
+/// 806 vertices, whose first parts predict more, still start oneTBB (within
+/// 2% either way).  In the third session, with a cheaper start, two threads
+/// had been faster on such grids (RESULTS.md, "Starting oneTBB for small
+/// polygons", thirty-fifth session).
+constexpr double min_parallel_seconds = 0.016;
 
 /// From this many input points on, a one-shot gives the memory it freed back
 /// to the system (release_free_memory()) once its parts are prepared (the
