@@ -437,16 +437,17 @@ void bad_input()
     }
     return std::string();
   };
-  // Each as it is and with 600 more vertices on the closing edge of its
-  // first ring (outside a task arena, only a polygon of 512 vertices or more
-  // is checked beside the triangulation).
+  // Each as it is and with `extra` more vertices on the closing edge of its
+  // first ring (outside a task arena, only a polygon of min_overlap_vertices
+  // or more is checked beside the triangulation).
+  const int extra = int(CGAL::Progressive_medial_axes::internal::min_overlap_vertices) + 100;
   for(const auto& [name, small] : invalid)
     for(bool large : {false, true}) {
       auto rings = small;
       if(large && rings[0].size() >= 3) {
         const P a = rings[0].back(), b = rings[0].front();
-        for(int i = 1; i <= 600; ++i)
-          rings[0].push_back(P(a.x() + (b.x() - a.x()) * i / 601.0, a.y() + (b.y() - a.y()) * i / 601.0));
+        for(int i = 1; i <= extra; ++i)
+          rings[0].push_back(P(a.x() + (b.x() - a.x()) * i / (extra + 1.0), a.y() + (b.y() - a.y()) * i / (extra + 1.0)));
       }
       const std::string expected = message([&] { CGAL::Progressive_medial_axes::validate_polygon(rings); });
       // called outside any task arena, and in one of two threads
@@ -457,7 +458,7 @@ void bad_input()
 #endif
       for(const std::string& got : {plain, in_arena})
         CHECK(!expected.empty() && got == expected,
-              "one-shot on invalid input (" << name << (large ? ", 600 more vertices" : "") << "): " << got);
+              "one-shot on invalid input (" << name << (large ? ", " + std::to_string(extra) + " more vertices" : "") << "): " << got);
     }
 }
 

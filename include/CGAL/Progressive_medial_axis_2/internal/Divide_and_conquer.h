@@ -219,8 +219,13 @@ inline void release_free_memory(std::size_t points)
 
 /// Below this many vertices, a one-shot called where oneTBB does not run
 /// yet checks the polygon before it triangulates it, on the calling thread,
-/// rather than beside it on another thread.
-constexpr std::size_t min_overlap_vertices = 512;
+/// rather than beside it on another thread.  The check takes about 0.3
+/// microseconds a vertex, starting oneTBB 0.8 to 2.3 ms (see
+/// `min_parallel_seconds`): with 512, integer grids of 670 and 806 vertices
+/// started oneTBB for the check alone, and the tool took 20% more time on
+/// them than with 4096, which keeps them on one thread (RESULTS.md,
+/// "Starting oneTBB for small polygons", thirty-fifth session).
+constexpr std::size_t min_overlap_vertices = 4096;
 
 /// Whether the calling thread is in a oneTBB task arena (oneTBB runs).
 inline bool tbb_running()
