@@ -162,17 +162,15 @@ enum Parts_mode { PARTS_SEQUENTIAL, PARTS_PARALLEL, PARTS_PARALLEL_IF_WORTH_IT }
 /// the third session; `task_arena::initialize()` alone took 2.0 to 2.3 ms
 /// in the thirty-fifth, on the 2-core VM of RESULTS.md), and the worker
 /// then meets the code, the heap and the per-thread tables of constructions
-/// cold.  On four polygons of a few
-/// hundred vertices of the degenerate table (files under 16 KB, where the
-/// tool calls the one-shot outside its arena), which started oneTBB after
-/// 4 ms of parts, the tool took 2% to 20% less time without oneTBB (a
-/// nested Koch snowflake of 384 vertices, whose parts took 11 ms in all:
-/// 0.80).  With 16 ms, the snowflake and a 320-vertex polygon with holes run
-/// on one thread (0.84 and 0.89 of the time); two integer grids of 670 and
-/// 806 vertices, whose first parts predict more, still start oneTBB (within
-/// 2% either way).  In the third session, with a cheaper start, two threads
-/// had been faster on such grids (RESULTS.md, "Starting oneTBB for small
-/// polygons", thirty-fifth session).
+/// cold.  On two polygons of a few hundred vertices of the degenerate
+/// table (files under 16 KB, where the tool calls the one-shot outside its
+/// arena) which started oneTBB after 4 ms of parts, the tool took 18% to
+/// 20% less time without it (a nested Koch snowflake of 384 vertices, whose
+/// parts took 11 ms in all, and a 320-vertex polygon with holes); with
+/// 16 ms both run on one thread.  In the third session, with a cheaper start,
+/// two threads had been faster on integer grids of 800 vertices (those now
+/// stay on one thread through `min_overlap_vertices`; RESULTS.md, "Starting
+/// oneTBB for small polygons", thirty-fifth session).
 constexpr double min_parallel_seconds = 0.016;
 
 /// From this many input points on, a one-shot gives the memory it freed back
@@ -222,8 +220,8 @@ inline void release_free_memory(std::size_t points)
 /// rather than beside it on another thread.  The check takes about 0.3
 /// microseconds a vertex, starting oneTBB 0.8 to 2.3 ms (see
 /// `min_parallel_seconds`): with 512, integer grids of 670 and 806 vertices
-/// started oneTBB for the check alone, and the tool took 20% more time on
-/// them than with 4096, which keeps them on one thread (RESULTS.md,
+/// started oneTBB for the check alone, and the tool took 23% to 26% more
+/// time on them than with 4096, which keeps them on one thread (RESULTS.md,
 /// "Starting oneTBB for small polygons", thirty-fifth session).
 constexpr std::size_t min_overlap_vertices = 4096;
 
