@@ -736,8 +736,9 @@ doubles (`Epick`, `Simple_cartesian<double>`): the exact number types of
 `Epeck` and `CORE::Expr` share state between threads, and run sequentially.
 Called outside any task arena (where oneTBB does not run yet), it starts
 oneTBB only where the work pays for it: it builds the parts on the calling
-thread, one after the other, until the parts left would take about 4 ms
-or more there, and builds those in parallel.  Without oneTBB it runs
+thread, one after the other, until the parts left would take about 16 ms
+or more there, and builds those in parallel; below 4,096 vertices it also
+checks the polygon on the calling thread, before the triangulation.  Without oneTBB it runs
 sequentially.  The result is the same in all cases.  For a polygon of
 65,536 points or more, it gives the memory that glibc keeps free back to
 the system (`malloc_trim()`) once the triangulation is freed and the
