@@ -416,9 +416,9 @@ public:
     const Vertex_handle* operator->() const { return this; }
     const Vertex_handle& operator*() const { return *this; }
     explicit operator bool() const { return d_ != nullptr; }
-    const Point_2& point() const { return d_->hds.vertex(v_).point; }
+    const Point_2& point() const { return d_->hds.point(v_, d_->points); }
     /// radius of the maximal disk centred here (0 at polygon vertices)
-    const FT& radius() const { return d_->hds.vertex(v_).radius; }
+    FT radius() const { return d_->hds.radius(v_); }
     Vertex_kind kind() const
     {
       const int m = degree();
@@ -451,9 +451,9 @@ public:
       return out;
     }
     /// whether this is a vertex of the polygon (the shape's boundary)
-    bool is_polygon_vertex() const { return d_->hds.vertex(v_).input_point != NONE; }
+    bool is_polygon_vertex() const { return d_->hds.vertex(v_).input_point() != NONE; }
     /// the polygon vertex, for a terminal or contour point
-    Input_vertex input_vertex() const { return input_vertex_of(d_, d_->hds.vertex(v_).input_point); }
+    Input_vertex input_vertex() const { return input_vertex_of(d_, d_->hds.vertex(v_).input_point()); }
     /// a number that identifies the vertex while it lives
     std::size_t id_number() const { return std::size_t(v_); }
     friend bool operator==(const Vertex_handle& a, const Vertex_handle& b) { return a.d_ == b.d_ && a.v_ == b.v_; }
@@ -724,7 +724,7 @@ public:
         ends[k] = {{representative_of(d->hds.source(h)), representative_of(d->hds.target(h))}};
         lengths[k] = curve(d, h).length();
         if(radii)
-          (*radii)[k] = {{CGAL::to_double(d->hds.vertex(ends[k][0]).radius), CGAL::to_double(d->hds.vertex(ends[k][1]).radius)}};
+          (*radii)[k] = {{CGAL::to_double(d->hds.radius(ends[k][0])), CGAL::to_double(d->hds.radius(ends[k][1]))}};
       }
     }, plain_numbers);
   }
@@ -761,7 +761,7 @@ public:
       int g = e;
       do {
         seen[g] = 1;
-        c.push_back(h.vertex(h.target(g)).input_point);
+        c.push_back(h.vertex(h.target(g)).input_point());
         g = h.next(g);
       } while(g != e);
       std::reverse(c.begin(), c.end());
@@ -1001,8 +1001,8 @@ private:
   {
     const auto& hds = d->hds;
     Progressive_medial_axes::internal::Curve c;
-    c.a = to_xy(hds.vertex(hds.source(h)).point);
-    c.b = to_xy(hds.vertex(hds.target(h)).point);
+    c.a = to_xy(hds.point(hds.source(h), d->points));
+    c.b = to_xy(hds.point(hds.target(h), d->points));
     const int f = hds.face_of(h), g = hds.face_of(h ^ 1);
     if(f >= 0 && g >= 0 && hds.face(f).is_point != hds.face(g).is_point) {
       const auto& P = hds.face(f).is_point ? hds.face(f) : hds.face(g);

@@ -112,7 +112,7 @@ public:
     if(data.info[std::size_t(V)].reversed) std::swap(U, W);
     alive_[std::size_t(V)] = 1;
     const int b = out_[std::size_t(U)];
-    CGAL_assertion(b != NO_INDEX && engine_.hds().vertex(engine_.hds().target(b)).input_point == W);
+    CGAL_assertion(b != NO_INDEX && engine_.hds().vertex(engine_.hds().target(b)).input_point() == W);
     const auto& p = data.points;
     const Orientation turn = engine_.traits().orientation_2_object()(p[std::size_t(U)], p[std::size_t(V)], p[std::size_t(W)]);
     std::size_t n_v = 0;
@@ -176,7 +176,7 @@ private:
     out_.assign(data.points.size(), NO_INDEX);
     for(int h = 0; h < int(hds.halfedge_capacity()); ++h)
       if(!hds.is_deleted(h) && hds.face_of(h) >= 0 && hds.face_of(h ^ 1) == OUTSIDE)
-        out_[std::size_t(hds.vertex(hds.source(h)).input_point)] = h;
+        out_[std::size_t(hds.vertex(hds.source(h)).input_point())] = h;
     return counts;
   }
 

@@ -58,29 +58,46 @@ struct Hds_halfedge {
   int vertex = NO_INDEX;     // target vertex
 };
 
-/// Indices of half-edges and input points stored in a vertex take 31 bits
-/// (the flags take the 32nd): the structure holds at most this many
+/// Indices of half-edges, disks and input points stored in a vertex take 31
+/// bits (the flags take the 32nd): the structure holds at most this many
 /// half-edges, and the input at most this many points.
 constexpr std::size_t max_vertex_field_index = std::size_t(1) << 30;
 
-template <class Point_2, class FT>
+/// A vertex: a polygon vertex (a corner), or a vertex with a disk of its
+/// own (a branch point or a junction), whose disk is a record of its own
+/// (Hds_disk).  A corner's disk is its input point with radius zero: the
+/// structure keeps no record for it.  Corners are about a third of the
+/// vertices of a one-shot (600,004 of 1,951,055 on a plate of 100,000
+/// holes), and their 48 bytes of disk were 8% of the peak memory of the
+/// tool on it (RESULTS.md, "Corners without a disk", thirty-sixth session).
 struct Hds_vertex {
+  int halfedge : 31;         // a half-edge whose target is this vertex
+  bool pending : 1;          // its disk is not computed yet
+  int slot : 31;             // >= 0: index of its disk; < 0: the corner of input point -1 - slot
+  bool alive : 1;
+
+  Hds_vertex() : halfedge(NO_INDEX), pending(false), slot(NO_INDEX), alive(true) {}
+  bool is_corner() const { return slot < 0; }
+  /// The index of the polygon vertex, if it is one (else NO_INDEX).
+  int input_point() const { return slot < 0 ? -1 - slot : NO_INDEX; }
+  void set_input_point(int i)
+  {
+    CGAL_precondition(i >= 0 && slot < 0);
+    slot = -1 - i;
+  }
+};
+
+/// The disk of a vertex that is not a corner.
+template <class Point_2, class FT>
+struct Hds_disk {
   // Coordinates and radius are computed when they are needed (see
   // resolve_vertex()): most vertices of a progressive run are removed again
   // before anyone looks at them.
   Point_2 point;
   FT radius = FT(0);
-  // the generators that define a pending vertex, counter-clockwise: input
-  // point indices (p0, p1), with p0 == p1 for a point generator
+  // the generators that define the vertex, counter-clockwise: input point
+  // indices (p0, p1), with p0 == p1 for a point generator
   int triple[3][2] = {{NO_INDEX, NO_INDEX}, {NO_INDEX, NO_INDEX}, {NO_INDEX, NO_INDEX}};
-  // (each flag shares 32 bits with an index: 56 bytes a vertex with double
-  // coordinates, not 64; a one-shot holds about 3 vertices an input point)
-  int halfedge : 31;         // a half-edge whose target is this vertex
-  bool pending : 1;
-  int input_point : 31;      // index of the polygon vertex, if it is one
-  bool alive : 1;
-
-  Hds_vertex() : halfedge(NO_INDEX), pending(false), input_point(NO_INDEX), alive(true) {}
 };
 
 template <class Point_2, class FT>
@@ -89,7 +106,8 @@ class Halfedge_structure
 public:
   typedef Hds_face Face;
   typedef Hds_halfedge Halfedge;
-  typedef Hds_vertex<Point_2, FT> Vertex;
+  typedef Hds_vertex Vertex;
+  typedef Hds_disk<Point_2, FT> Disk;
 
   static int twin(int h) { return h ^ 1; }
 
@@ -98,6 +116,33 @@ public:
   const Halfedge& he(int h) const { return halfedges_[h]; }
   Vertex& vertex(int v) { record(log_v_, vertices_, v, saved_.v); return vertices_[v]; }
   const Vertex& vertex(int v) const { return vertices_[v]; }
+  /// The disk of a vertex that is not a corner.
+  Disk& disk(int v)
+  {
+    CGAL_assertion(!vertices_[v].is_corner());
+    const int d = vertices_[v].slot;
+    record(log_d_, disks_, d, saved_.d);
+    return disks_[d];
+  }
+  const Disk& disk(int v) const
+  {
+    CGAL_assertion(!vertices_[v].is_corner());
+    return disks_[vertices_[v].slot];
+  }
+  /// The centre of the disk of vertex `v`, whose input points are `points`.
+  const Point_2& point(int v, const std::vector<Point_2>& points) const
+  {
+    const Vertex& x = vertices_[v];
+    return x.is_corner() ? points[std::size_t(x.input_point())] : disks_[x.slot].point;
+  }
+  /// The radius of the disk of vertex `v` (0 at a corner).  (By value: a
+  /// zero shared by all corners would be one reference-counted number that
+  /// threads copy at once where FT is CORE::Expr.)
+  FT radius(int v) const
+  {
+    const Vertex& x = vertices_[v];
+    return x.is_corner() ? FT(0) : disks_[x.slot].radius;
+  }
   Face& face(int f) { record(log_f_, faces_, f, saved_.f); return faces_[f]; }
   const Face& face(int f) const { return faces_[f]; }
 
@@ -121,6 +166,9 @@ public:
   std::size_t halfedge_capacity() const { return halfedges_.size(); }
   std::size_t vertex_capacity() const { return vertices_.size(); }
   std::size_t face_capacity() const { return faces_.size(); }
+  std::size_t disk_capacity() const { return disks_.size(); }
+  /// The disk record `d` (not recorded by the journal).
+  Disk& disk_record(std::size_t d) { CGAL_precondition(!journal_); return disks_[d]; }
   std::size_t number_of_vertices() const { return vertices_.size() - free_vertices_.size(); }
   std::size_t number_of_faces() const { return faces_.size() - free_faces_.size(); }
 
@@ -164,23 +212,11 @@ public:
     push(free_edges_, FREE_EDGES, e);
   }
 
-  int new_vertex(const Point_2& p, const FT& r, int input_point = NO_INDEX)
+  /// A new vertex at the polygon vertex `input_point` (a corner).
+  int new_corner(int input_point)
   {
-    int v;
-    if(!free_vertices_.empty()) {
-      v = pop(free_vertices_, FREE_VERTICES);
-    } else {
-      v = int(vertices_.size());
-      vertices_.emplace_back();
-    }
-    Vertex& x = vertex(v);
-    x.point = p;
-    x.radius = r;
-    x.pending = false;
-    x.halfedge = NO_INDEX;
-    x.input_point = input_point;
-    x.alive = true;
-    x.triple[0][0] = NO_INDEX;   // (a reused slot: no stale generators)
+    const int v = new_vertex_slot();
+    vertex(v).slot = -1 - input_point;
     return v;
   }
 
@@ -189,14 +225,23 @@ public:
   /// (counter-clockwise around it).
   int new_pending_vertex(int a, int b, int c)
   {
-    int v = new_vertex(Point_2(), FT(0));
+    const int v = new_vertex_slot();
+    int d;
+    if(!free_disks_.empty()) {
+      d = pop(free_disks_, FREE_DISKS);
+    } else {
+      d = int(disks_.size());
+      disks_.emplace_back();
+    }
     Vertex& x = vertex(v);
+    x.slot = d;
     x.pending = true;
     pending_.push_back(v);
+    Disk& y = disk(v);
     const int f[3] = {a, b, c};
     for(int i = 0; i < 3; ++i) {
-      x.triple[i][0] = faces_[f[i]].p0;
-      x.triple[i][1] = faces_[f[i]].p1;
+      y.triple[i][0] = faces_[f[i]].p0;
+      y.triple[i][1] = faces_[f[i]].p1;
     }
     return v;
   }
@@ -206,6 +251,8 @@ public:
     CGAL_assertion(vertices_[v].alive);
     vertex(v).alive = false;
     push(free_vertices_, FREE_VERTICES, v);
+    if(!vertices_[v].is_corner())
+      push(free_disks_, FREE_DISKS, vertices_[v].slot);
   }
 
   int new_face(bool is_point, int p0, int p1)
@@ -238,7 +285,7 @@ public:
   bool remove_degree_two_vertex(int v)
   {
     const Vertex& x = vertices_[v];
-    if(!x.alive || x.input_point != NO_INDEX)
+    if(!x.alive || x.is_corner())
       return false;
     int h1 = x.halfedge;          // arrives at v
     int h2 = next(h1);            // leaves v
@@ -269,7 +316,7 @@ public:
   void begin_journal()
   {
     journal_ = true;
-    saved_ = Sizes{halfedges_.size(), vertices_.size(), faces_.size(), pending_.size()};
+    saved_ = Sizes{halfedges_.size(), vertices_.size(), faces_.size(), disks_.size(), pending_.size()};
   }
 
   void end_journal()
@@ -278,6 +325,7 @@ public:
     saved_ = Sizes();
     log_he_.clear();
     log_v_.clear();
+    log_d_.clear();
     log_f_.clear();
     log_zero_.clear();
     log_free_.clear();
@@ -288,21 +336,24 @@ public:
   {
     CGAL_precondition(journal_);
     for(auto it = log_free_.rbegin(); it != log_free_.rend(); ++it) {
-      std::vector<int>& list = it->list == FREE_EDGES ? free_edges_ : (it->list == FREE_VERTICES ? free_vertices_ : free_faces_);
+      std::vector<int>& list = free_list(it->list);
       if(it->pushed) list.pop_back();
       else list.push_back(it->index);
     }
     undo(log_he_, halfedges_);
     undo(log_v_, vertices_);
+    undo(log_d_, disks_);
     undo(log_f_, faces_);
     undo(log_zero_, zero_length_);
     halfedges_.resize(saved_.he);
     zero_length_.resize(saved_.he / 2);
     vertices_.resize(saved_.v);
+    disks_.resize(saved_.d);
     faces_.resize(saved_.f);
     pending_.resize(saved_.pending);
     log_he_.clear();
     log_v_.clear();
+    log_d_.clear();
     log_f_.clear();
     log_zero_.clear();
     log_free_.clear();
@@ -325,7 +376,7 @@ public:
 
   /// The shifts of the indices of a structure appended by append().
   struct Offsets {
-    int halfedge = 0, vertex = 0, face = 0;
+    int halfedge = 0, vertex = 0, face = 0, disk = 0;
   };
 
   /// Moves the elements of `other` (built on its own, for example by
@@ -343,7 +394,7 @@ public:
     };
     CGAL_precondition(!journal_ && !other.journal_);
     require_indexable(halfedges_.size() + other.halfedges_.size());
-    const Offsets o{int(halfedges_.size()), int(vertices_.size()), int(faces_.size())};
+    const Offsets o{int(halfedges_.size()), int(vertices_.size()), int(faces_.size()), int(disks_.size())};
     auto shift = [](int& i, int by) { if(i >= 0) i += by; };
     halfedges_.reserve(halfedges_.size() + other.halfedges_.size());
     for(Halfedge h : other.halfedges_) {
@@ -357,11 +408,15 @@ public:
     zero_length_.insert(zero_length_.end(), other.zero_length_.begin(), other.zero_length_.end());
     release(other.zero_length_);
     vertices_.reserve(vertices_.size() + other.vertices_.size());
-    for(Vertex& v : other.vertices_) {
-      if(v.halfedge >= 0) v.halfedge = v.halfedge + o.halfedge;   // (a bit-field)
-      vertices_.push_back(std::move(v));
+    for(Vertex v : other.vertices_) {
+      if(v.halfedge >= 0) v.halfedge = v.halfedge + o.halfedge;   // (bit-fields)
+      if(v.slot >= 0) v.slot = v.slot + o.disk;
+      vertices_.push_back(v);
     }
     release(other.vertices_);
+    disks_.reserve(disks_.size() + other.disks_.size());
+    for(Disk& d : other.disks_) disks_.push_back(std::move(d));
+    release(other.disks_);
     faces_.reserve(faces_.size() + other.faces_.size());
     for(Face f : other.faces_) {
       shift(f.halfedge, o.halfedge);
@@ -370,6 +425,7 @@ public:
     for(int e : other.free_edges_) free_edges_.push_back(e + o.halfedge);
     for(int v : other.free_vertices_) free_vertices_.push_back(v + o.vertex);
     for(int f : other.free_faces_) free_faces_.push_back(f + o.face);
+    for(int d : other.free_disks_) free_disks_.push_back(d + o.disk);
     for(int v : other.pending_) pending_.push_back(v + o.vertex);
     if(keep_other)
       other.clear();
@@ -384,36 +440,64 @@ public:
     CGAL_precondition(!journal_);
     halfedges_.clear();
     vertices_.clear();
+    disks_.clear();
     faces_.clear();
     zero_length_.clear();
     free_edges_.clear();
     free_vertices_.clear();
+    free_disks_.clear();
     free_faces_.clear();
     pending_.clear();
   }
 
   /// Reserves room for the axis of `points` input points: about 2 faces
-  /// and 4 vertices a point.
-  void reserve_for_points(std::size_t points) { reserve(2 * points + 16, 4 * points + 16); }
+  /// and 4 vertices a point, 3 of them with disks.
+  void reserve_for_points(std::size_t points) { reserve(2 * points + 16, 4 * points + 16, 3 * points + 16); }
 
-  void reserve(std::size_t faces, std::size_t vertices)
+  void reserve(std::size_t faces, std::size_t vertices, std::size_t disks)
   {
     faces_.reserve(faces);
     vertices_.reserve(vertices);
+    disks_.reserve(disks);
     halfedges_.reserve(6 * faces);
     zero_length_.reserve(3 * faces);
   }
 
 private:
-  enum Free_list { FREE_EDGES, FREE_VERTICES, FREE_FACES };
+  enum Free_list { FREE_EDGES, FREE_VERTICES, FREE_DISKS, FREE_FACES };
   struct Free_change {
     Free_list list;
     bool pushed;
     int index;
   };
   struct Sizes {
-    std::size_t he = 0, v = 0, f = 0, pending = 0;
+    std::size_t he = 0, v = 0, f = 0, d = 0, pending = 0;
   };
+  std::vector<int>& free_list(Free_list which)
+  {
+    switch(which) {
+    case FREE_EDGES: return free_edges_;
+    case FREE_VERTICES: return free_vertices_;
+    case FREE_DISKS: return free_disks_;
+    default: return free_faces_;
+    }
+  }
+  // A vertex record, from the free list or new (the caller sets its slot).
+  int new_vertex_slot()
+  {
+    int v;
+    if(!free_vertices_.empty()) {
+      v = pop(free_vertices_, FREE_VERTICES);
+    } else {
+      v = int(vertices_.size());
+      vertices_.emplace_back();
+    }
+    Vertex& x = vertex(v);
+    x.pending = false;
+    x.halfedge = NO_INDEX;
+    x.alive = true;
+    return v;
+  }
 
   // Records the value of element i of `a` before a change, if it existed
   // when the journal began (later elements are removed by the rollback).
@@ -457,15 +541,17 @@ private:
 
   std::vector<Halfedge> halfedges_;
   std::vector<Vertex> vertices_;
+  std::vector<Disk> disks_;
   std::vector<Face> faces_;
   std::vector<char> zero_length_;   // per edge (half-edge pair)
-  std::vector<int> free_edges_, free_vertices_, free_faces_;
+  std::vector<int> free_edges_, free_vertices_, free_disks_, free_faces_;
   std::vector<int> pending_;
 
   bool journal_ = false;
   Sizes saved_;
   std::vector<std::pair<int, Halfedge> > log_he_;
   std::vector<std::pair<int, Vertex> > log_v_;
+  std::vector<std::pair<int, Disk> > log_d_;
   std::vector<std::pair<int, Face> > log_f_;
   std::vector<std::pair<int, char> > log_zero_;
   std::vector<Free_change> log_free_;
@@ -473,28 +559,33 @@ private:
 
 /// Computes the coordinates and radius of a pending vertex: the disk tangent
 /// to the generators that defined it, or else to three consecutive
-/// generators around it (cocircular ones).  `site(f)` gives the traits site
-/// of face f, `point_site(p0, p1)` the site of input points (p0 == p1 for a
-/// point).
-template <class Traits, class Hds, class Site_of, class Point_site>
-void resolve_vertex(Hds& hds, int v, const Traits& traits, const Site_of& site,
-                    const Point_site& point_site)
+/// generators around it (cocircular ones).  `points` are the input points,
+/// `site(f)` gives the traits site of face f.
+template <class Traits, class Hds, class Site_of>
+void resolve_vertex(Hds& hds, int v, const std::vector<typename Traits::Point_2>& points, const Traits& traits,
+                    const Site_of& site)
 {
-  typename Hds::Vertex& x = hds.vertex(v);
-  if(!x.pending)
+  typedef typename Traits::Site_2 Site_2;
+  const Hds& chds = hds;
+  if(!chds.vertex(v).pending)
     return;
+  typename Hds::Disk& x = hds.disk(v);
+  auto point_site = [&](const int p[2]) {
+    return p[0] == p[1] ? Site_2::point(points[std::size_t(p[0])])
+                        : Site_2::segment(points[std::size_t(p[0])], points[std::size_t(p[1])]);
+  };
   bool done = false;
   if(x.triple[0][0] != NO_INDEX)
-    done = traits.construct_medial_disk_2_object()(point_site(x.triple[0][0], x.triple[0][1]),
-                                                   point_site(x.triple[1][0], x.triple[1][1]),
-                                                   point_site(x.triple[2][0], x.triple[2][1]), x.point, x.radius);
+    done = traits.construct_medial_disk_2_object()(point_site(x.triple[0]), point_site(x.triple[1]),
+                                                   point_site(x.triple[2]), x.point, x.radius);
+  const int h0 = chds.vertex(v).halfedge;
   if(!done) {
     // the faces around v, clockwise: three consecutive ones
     std::vector<int> faces;
-    int h0 = x.halfedge, h = h0;
+    int h = h0;
     do {
-      faces.push_back(hds.face_of(h));
-      h = Hds::twin(hds.next(h));
+      faces.push_back(chds.face_of(h));
+      h = Hds::twin(chds.next(h));
     } while(h != h0 && faces.size() < 64);
     const std::size_t d = faces.size();
     for(std::size_t i = 0; i < d && !done; ++i) {
@@ -506,19 +597,18 @@ void resolve_vertex(Hds& hds, int v, const Traits& traits, const Site_of& site,
   if(!done) {
     // no disk from the generators (only with inexact decisions): take a
     // neighbouring vertex whose position is known
-    const int h0 = x.halfedge;
     int h = h0;
     do {
-      const typename Hds::Vertex& y = hds.vertex(hds.source(h));
-      if(!y.pending) {
-        x.point = y.point;
-        x.radius = y.radius;
+      const int y = chds.source(h);
+      if(!chds.vertex(y).pending) {
+        x.point = chds.point(y, points);
+        x.radius = chds.radius(y);
         break;
       }
-      h = Hds::twin(hds.next(h));
+      h = Hds::twin(chds.next(h));
     } while(h != h0);
   }
-  x.pending = false;
+  hds.vertex(v).pending = false;
 }
 
 } // namespace internal

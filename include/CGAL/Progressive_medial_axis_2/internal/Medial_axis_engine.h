@@ -132,7 +132,7 @@ public:
     Hds& hds = hds_;
     int V[3];
     for(int i = 0; i < 3; ++i)
-      V[i] = corner[i] != NO_INDEX ? corner[i] : hds.new_vertex(points_[v[i]], FT(0), v[i]);
+      V[i] = corner[i] != NO_INDEX ? corner[i] : hds.new_corner(v[i]);
     const int Fa = hds.new_face(false, v[0], v[1]);   // side 2
     const int Fb = hds.new_face(false, v[1], v[2]);   // side 0
     const int Fc = hds.new_face(false, v[2], v[0]);   // side 1
@@ -239,14 +239,15 @@ public:
     Hds& hds = hds_;
     for(int v : vertices) {
       const auto& x = static_cast<const Hds&>(hds).vertex(v);
-      if(!x.alive || x.input_point != NO_INDEX || x.halfedge == NO_INDEX) continue;
-      Point_2 c = x.point;
-      FT r = x.radius;
+      if(!x.alive || x.is_corner() || x.halfedge == NO_INDEX) continue;
+      const auto& disk = static_cast<const Hds&>(hds).disk(v);
+      Point_2 c = disk.point;
+      FT r = disk.radius;
       if(x.pending) {
         auto site_of = [&](const int* p) {
           return p[0] == p[1] ? Site_2::point(points_[p[0]]) : Site_2::segment(points_[p[0]], points_[p[1]]);
         };
-        if(!traits_.construct_medial_disk_2_object()(site_of(x.triple[0]), site_of(x.triple[1]), site_of(x.triple[2]), c, r))
+        if(!traits_.construct_medial_disk_2_object()(site_of(disk.triple[0]), site_of(disk.triple[1]), site_of(disk.triple[2]), c, r))
           throw Uncertain_decision();
       }
       const double cx = CGAL::to_double(c.x()), cy = CGAL::to_double(c.y()), rr = CGAL::to_double(r);
@@ -279,11 +280,7 @@ public:
 
   void resolve(int v)
   {
-    resolve_vertex(hds_, v, traits_, [this](int f) { return merge_.site(f); },
-                   [this](int p0, int p1) {
-                     return p0 == p1 ? Site_2::point(points_[p0])
-                                     : Site_2::segment(points_[p0], points_[p1]);
-                   });
+    resolve_vertex(hds_, v, points_, traits_, [this](int f) { return merge_.site(f); });
   }
 
 private:

@@ -205,7 +205,7 @@ private:
     }
     const int G = face_across(h);
     const int C1 = hds_.new_face(false, U, V), C2 = hds_.new_face(false, V, W);
-    const int vV = hds_.new_vertex(points_[V], FT(0), V);
+    const int vV = hds_.new_corner(V);
     const int z = hds_.new_pending_vertex(G, C1, C2);
     const int y = hds_.target(h);
     // h (a -> y) becomes a -> z in C2; h2 (z -> y) in C1
@@ -383,7 +383,7 @@ private:
     const int PV = hds_.new_face(true, V, V);
     const int E2 = hds_.new_face(false, V, W);
     const int N[3] = {E1, PV, E2};
-    const int vV = hds_.new_vertex(points_[V], FT(0), V);
+    const int vV = hds_.new_corner(V);
 
     // The generator of each crossing: e1, v or e2, in this order along the front.
     // Where w becomes flat (the edge B after w continues e2 on its line),
@@ -504,7 +504,7 @@ private:
   }
 
   const Hds& chds() const { return hds_; }
-  int input_of(int v) const { return chds().vertex(v).input_point; }
+  int input_of(int v) const { return chds().vertex(v).input_point(); }
   int face_across(int h) const { return hds_.face_of(Hds::twin(h)); }
   bool is_point_at(int f, int point) const
   {
@@ -532,7 +532,8 @@ private:
   // the generators that define vertex x (counter-clockwise around it)
   const Site_2* vertex_sites(int x)
   {
-    const auto& t = chds().vertex(x).triple;
+    require(!chds().vertex(x).is_corner());
+    const auto& t = chds().disk(x).triple;
     require(t[0][0] != NO_INDEX);
     for(int i = 0; i < 3; ++i) sites_[i] = point_site(t[i][0], t[i][1]);
     return sites_;
@@ -656,9 +657,10 @@ private:
   // Whether two vertices are one disk (four or more generators at a point).
   bool same_disk(int v, int w)
   {
-    const auto &a = chds().vertex(v), &b = chds().vertex(w);
-    if(a.input_point != NO_INDEX || b.input_point != NO_INDEX || a.triple[0][0] == NO_INDEX ||
-       b.triple[0][0] == NO_INDEX)
+    if(chds().vertex(v).is_corner() || chds().vertex(w).is_corner())
+      return false;
+    const auto &a = chds().disk(v), &b = chds().disk(w);
+    if(a.triple[0][0] == NO_INDEX || b.triple[0][0] == NO_INDEX)
       return false;
     return traits_.equal_medial_disks_2_object()(
       point_site(a.triple[0][0], a.triple[0][1]), point_site(a.triple[1][0], a.triple[1][1]),

@@ -163,8 +163,8 @@ public:
     unify_corners(hds_.target(hm), vP_);
     unify_corners(hds_.source(hm), vQ_);
     CGAL_precondition(hds_.source(hm) == vQ_ && hds_.target(hm) == vP_);
-    P_ = chds().vertex(vP_).input_point;
-    Q_ = chds().vertex(vQ_).input_point;
+    P_ = chds().vertex(vP_).input_point();
+    Q_ = chds().vertex(vQ_).input_point();
     line_ = Site_2::segment(points_[P_], points_[Q_]);
     site_p_ = site(Cp_);
     site_m_ = site(Cm_);
@@ -255,7 +255,7 @@ private:
     Time time;
   };
 
-  int input_of(int v) const { return chds().vertex(v).input_point; }
+  int input_of(int v) const { return chds().vertex(v).input_point(); }
   // read-only access (the journal of the double model records writes only)
   const Hds& chds() const { return hds_; }
 
@@ -287,10 +287,8 @@ private:
 
   const Point_2& vertex_point(int v) const
   {
-    resolve_vertex(hds_, v, traits_, [this](int f) { return site(f); },
-                   [this](int p0, int p1) { return p0 == p1 ? Site_2::point(points_[p0])
-                                                            : Site_2::segment(points_[p0], points_[p1]); });
-    return chds().vertex(v).point;
+    resolve_vertex(hds_, v, points_, traits_, [this](int f) { return site(f); });
+    return chds().point(v, points_);
   }
 
   // Moves every half-edge of vertex `from` to vertex `to` (two corners of one
@@ -299,7 +297,7 @@ private:
   {
     if(from == to)
       return;
-    CGAL_assertion(chds().vertex(from).input_point == chds().vertex(to).input_point);
+    CGAL_assertion(chds().vertex(from).input_point() == chds().vertex(to).input_point());
     const int h0 = chds().vertex(from).halfedge;
     int h = h0;
     do {
@@ -351,9 +349,10 @@ private:
   // Whether two vertices defined by generator triples are one disk.
   bool same_disk(int v, int w) const
   {
-    const typename Hds::Vertex &a = chds().vertex(v), &b = chds().vertex(w);
-    if(a.input_point != NO_INDEX || b.input_point != NO_INDEX || a.triple[0][0] == NO_INDEX ||
-       b.triple[0][0] == NO_INDEX)
+    if(chds().vertex(v).is_corner() || chds().vertex(w).is_corner())
+      return false;
+    const typename Hds::Disk &a = chds().disk(v), &b = chds().disk(w);
+    if(a.triple[0][0] == NO_INDEX || b.triple[0][0] == NO_INDEX)
       return false;
     return traits_.equal_medial_disks_2_object()(triple_site(a.triple[0]), triple_site(a.triple[1]),
                                                  triple_site(a.triple[2]), triple_site(b.triple[0]),
@@ -611,11 +610,13 @@ private:
   // generators where it has them, exact, or else of its point.
   void foot_time_of_vertex(const Site_2& line, int v, Time& t) const
   {
-    const typename Hds::Vertex& x = chds().vertex(v);
-    if(x.input_point == NO_INDEX && x.triple[0][0] != NO_INDEX &&
-       traits_.compute_disk_foot_time_2_object()(line, triple_site(x.triple[0]), triple_site(x.triple[1]),
-                                                 triple_site(x.triple[2]), t))
-      return;
+    if(!chds().vertex(v).is_corner()) {
+      const typename Hds::Disk& x = chds().disk(v);
+      if(x.triple[0][0] != NO_INDEX &&
+         traits_.compute_disk_foot_time_2_object()(line, triple_site(x.triple[0]), triple_site(x.triple[1]),
+                                                   triple_site(x.triple[2]), t))
+        return;
+    }
     t = traits_.compute_foot_time_2_object()(line, vertex_point(v));
   }
 

@@ -413,7 +413,8 @@ private:
   {
     data.hds = in_[0]->hds;
     Hds b = in_[1]->hds;
-    const std::size_t faces_a = data.hds.face_capacity(), vertices_a = data.hds.vertex_capacity();
+    const std::size_t faces_a = data.hds.face_capacity(), vertices_a = data.hds.vertex_capacity(),
+                      disks_a = data.hds.disk_capacity();
     const typename Hds::Offsets o = data.hds.append(b);
     offset_ = o.halfedge;
     auto renumber = [&](int x, int& i) {
@@ -427,15 +428,20 @@ private:
     }
     for(std::size_t v = 0; v < data.hds.vertex_capacity(); ++v) {
       auto& V = data.hds.vertex(int(v));
-      const int x = v < vertices_a ? 0 : 1;
-      int input_point = V.input_point;   // (a bit-field)
-      renumber(x, input_point);
-      V.input_point = input_point;
-      for(auto& t : V.triple) {
+      if(!V.is_corner()) continue;
+      int input_point = V.input_point();
+      renumber(v < vertices_a ? 0 : 1, input_point);
+      // (a corner inside a shared chain is left out of the result: see
+      // check_result(); its record keeps its old point)
+      CGAL_assertion(input_point >= 0 || !V.alive || V.halfedge == NO_INDEX);
+      if(input_point >= 0) V.set_input_point(input_point);
+    }
+    for(std::size_t d = 0; d < data.hds.disk_capacity(); ++d)
+      for(auto& t : data.hds.disk_record(d).triple) {
+        const int x = d < disks_a ? 0 : 1;
         renumber(x, t[0]);
         renumber(x, t[1]);
       }
-    }
   }
 
   // No cell and no vertex of the result refers to a place inside a shared
@@ -450,7 +456,7 @@ private:
     }
     for(std::size_t v = 0; v < data.hds.vertex_capacity(); ++v) {
       const auto& V = data.hds.vertex(int(v));
-      CGAL_assertion_msg(!V.alive || V.halfedge == NO_INDEX || V.input_point < n, "a corner inside a shared chain is left");
+      CGAL_assertion_msg(!V.alive || V.halfedge == NO_INDEX || V.input_point() < n, "a corner inside a shared chain is left");
       CGAL_USE(V);
     }
     CGAL_USE(n);
