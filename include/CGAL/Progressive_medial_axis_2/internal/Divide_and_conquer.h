@@ -460,7 +460,6 @@ public:
     CGAL_assertion(one_thread || next_to_move == P);
     counts.add(join_counts);
     free_vector(parent_);
-    free_vector(order_);
     free_vector(part_);
     free_vector(triangles_);
     free_vector(sides_);
@@ -516,8 +515,10 @@ private:
   void prepare(std::size_t parts)
   {
     const std::size_t T = triangles_.size();
-    spanning_tree();
-    cut(parts == 0 ? 1 : parts);
+    // (the order is needed here only: freed before the parts take memory)
+    std::vector<int> order;
+    spanning_tree(order);
+    cut(parts == 0 ? 1 : parts, order);
     sides_.assign(T, std::array<int, 3>{{NO_INDEX, NO_INDEX, NO_INDEX}});
     added_.assign(T, 0);
     probed_.clear();
@@ -526,50 +527,51 @@ private:
   }
 
   // Breadth-first spanning tree of the dual graph from triangle 0: the
-  // parent of each triangle, the order, and the diagonals off the tree.
-  void spanning_tree()
+  // parent of each triangle, the `order`, and the diagonals off the tree.
+  void spanning_tree(std::vector<int>& order)
   {
     const int T = int(triangles_.size());
     parent_.assign(std::size_t(T), NO_INDEX);
     off_tree_.clear();
-    order_.clear();
-    order_.reserve(std::size_t(T));
+    order.clear();
+    order.reserve(std::size_t(T));
     std::vector<char> seen(std::size_t(T), 0);
     // a spanning forest: one tree per connected part of the interior (several
     // where the outer ring is pinched, touching itself at a vertex)
     int next_root = 0;
     for(std::size_t i = 0; i < std::size_t(T); ++i) {
-      if(i == order_.size()) {
+      if(i == order.size()) {
         while(seen[std::size_t(next_root)]) ++next_root;
         seen[std::size_t(next_root)] = 1;
-        order_.push_back(next_root);
+        order.push_back(next_root);
       }
-      const int t = order_[i];
+      const int t = order[i];
       for(int e = 0; e < 3; ++e) {
         const int u = triangles_[std::size_t(t)].nbr[e];
         if(u < 0) continue;
         if(!seen[std::size_t(u)]) {
           seen[std::size_t(u)] = 1;
           parent_[std::size_t(u)] = t;
-          order_.push_back(u);
+          order.push_back(u);
         } else if(u != parent_[std::size_t(t)] && parent_[std::size_t(u)] != t && t < u) {
           off_tree_.push_back({{t, u}});
         }
       }
     }
-    CGAL_assertion(order_.size() == std::size_t(T));
+    CGAL_assertion(order.size() == std::size_t(T));
   }
 
-  // Cuts the tree bottom-up into subtrees of at least T / parts triangles
-  // (the root's part takes the rest).  roots_[0] is the root of the tree.
-  void cut(std::size_t parts)
+  // Cuts the tree, whose triangles are in breadth-first `order`, bottom-up
+  // into subtrees of at least T / parts triangles (the root's part takes
+  // the rest).  roots_[0] is the root of the tree.
+  void cut(std::size_t parts, const std::vector<int>& order)
   {
     const int T = int(triangles_.size());
     const int target = (std::max)(1, int((std::size_t(T) + parts - 1) / parts));
     std::vector<int> size(std::size_t(T), 1);
     std::vector<char> is_root(std::size_t(T), 0);
-    for(std::size_t i = order_.size(); i-- > 0;) {
-      const int t = order_[i];
+    for(std::size_t i = order.size(); i-- > 0;) {
+      const int t = order[i];
       if(parent_[std::size_t(t)] == NO_INDEX || size[std::size_t(t)] >= target)
         is_root[std::size_t(t)] = 1;
       else
@@ -578,7 +580,7 @@ private:
     roots_.clear();
     size_.clear();
     part_.assign(std::size_t(T), 0);
-    for(int t : order_) {
+    for(int t : order) {
       if(is_root[std::size_t(t)]) {
         part_[std::size_t(t)] = int(roots_.size());
         roots_.push_back(t);
@@ -685,7 +687,7 @@ private:
 
   Engine& engine_;
   std::vector<Triangle> triangles_;
-  std::vector<int> parent_, order_, roots_, part_;
+  std::vector<int> parent_, roots_, part_;
   std::vector<std::size_t> size_;   // triangles of each part
   std::vector<std::array<int, 2> > off_tree_;
   std::vector<std::array<int, 3> > sides_;
