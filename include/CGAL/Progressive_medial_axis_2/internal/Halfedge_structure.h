@@ -226,13 +226,7 @@ public:
   int new_pending_vertex(int a, int b, int c)
   {
     const int v = new_vertex_slot();
-    int d;
-    if(!free_disks_.empty()) {
-      d = pop(free_disks_, FREE_DISKS);
-    } else {
-      d = int(disks_.size());
-      disks_.emplace_back();
-    }
+    const int d = take_slot(disks_, FREE_DISKS);
     Vertex& x = vertex(v);
     x.slot = d;
     x.pending = true;
@@ -257,13 +251,7 @@ public:
 
   int new_face(bool is_point, int p0, int p1)
   {
-    int f;
-    if(!free_faces_.empty()) {
-      f = pop(free_faces_, FREE_FACES);
-    } else {
-      f = int(faces_.size());
-      faces_.emplace_back();
-    }
+    const int f = take_slot(faces_, FREE_FACES);
     Face& x = face(f);
     x.halfedge = NO_INDEX;
     x.is_point = is_point;
@@ -482,16 +470,20 @@ private:
     default: return free_faces_;
     }
   }
+  // An element of `a` from the free list `which`, or a new one.
+  template <class T>
+  int take_slot(std::vector<T>& a, Free_list which)
+  {
+    std::vector<int>& list = free_list(which);
+    if(!list.empty())
+      return pop(list, which);
+    a.emplace_back();
+    return int(a.size()) - 1;
+  }
   // A vertex record, from the free list or new (the caller sets its slot).
   int new_vertex_slot()
   {
-    int v;
-    if(!free_vertices_.empty()) {
-      v = pop(free_vertices_, FREE_VERTICES);
-    } else {
-      v = int(vertices_.size());
-      vertices_.emplace_back();
-    }
+    const int v = take_slot(vertices_, FREE_VERTICES);
     Vertex& x = vertex(v);
     x.pending = false;
     x.halfedge = NO_INDEX;
