@@ -22,7 +22,11 @@ tmp=$(mktemp -d)
 status=0
 for f in "$@"; do
   steps=$($tool --stats --step 0 --progressive $driver "$f" | awk '$1=="steps"{print $2}')
-  for k in full 1 10 $((steps/10)) $((steps/3)) $((2*steps/3)) $((steps-1)); do
+  # (the steps strictly between the first and the last, each once: a shape
+  # of 0 or 1 steps has only its full run)
+  ks=$(for k in 1 10 $((steps/10)) $((steps/3)) $((2*steps/3)) $((steps-1)); do
+         [ "$k" -ge 1 ] && [ "$k" -lt "$steps" ] && echo "$k"; done | sort -nu)
+  for k in full $ks; do
     if [ "$k" = full ]; then
       progressive=""; [ $driver = region ] || progressive="--progressive $driver"
       $tool --traits $traits --pairs $progressive "$f" > $tmp/ours.txt; shape=$f
