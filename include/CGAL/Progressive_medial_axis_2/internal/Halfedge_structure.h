@@ -100,6 +100,15 @@ struct Hds_disk {
   int triple[3][2] = {{NO_INDEX, NO_INDEX}, {NO_INDEX, NO_INDEX}, {NO_INDEX, NO_INDEX}};
 };
 
+/// The traits site of a generator (p[0], p[1]) of a disk's triple, of the
+/// input points `points` (p[0] == p[1] for a point generator).
+template <class Site_2, class Point_2>
+Site_2 generator_site(const std::vector<Point_2>& points, const int p[2])
+{
+  return p[0] == p[1] ? Site_2::point(points[std::size_t(p[0])])
+                      : Site_2::segment(points[std::size_t(p[0])], points[std::size_t(p[1])]);
+}
+
 template <class Point_2, class FT>
 class Halfedge_structure
 {
@@ -562,10 +571,7 @@ void resolve_vertex(Hds& hds, int v, const std::vector<typename Traits::Point_2>
   if(!chds.vertex(v).pending)
     return;
   typename Hds::Disk& x = hds.disk(v);
-  auto point_site = [&](const int p[2]) {
-    return p[0] == p[1] ? Site_2::point(points[std::size_t(p[0])])
-                        : Site_2::segment(points[std::size_t(p[0])], points[std::size_t(p[1])]);
-  };
+  auto point_site = [&](const int p[2]) { return generator_site<Site_2>(points, p); };
   bool done = false;
   if(x.triple[0][0] != NO_INDEX)
     done = traits.construct_medial_disk_2_object()(point_site(x.triple[0]), point_site(x.triple[1]),

@@ -244,9 +244,7 @@ public:
       Point_2 c = disk.point;
       FT r = disk.radius;
       if(x.pending) {
-        auto site_of = [&](const int* p) {
-          return p[0] == p[1] ? Site_2::point(points_[p[0]]) : Site_2::segment(points_[p[0]], points_[p[1]]);
-        };
+        auto site_of = [&](const int p[2]) { return generator_site<Site_2>(points_, p); };
         if(!traits_.construct_medial_disk_2_object()(site_of(disk.triple[0]), site_of(disk.triple[1]), site_of(disk.triple[2]), c, r))
           throw Uncertain_decision();
       }

@@ -525,17 +525,15 @@ private:
     const Hds_face& x = chds().face(f);
     return x.is_point ? Site_2::point(points_[x.p0]) : Site_2::segment(points_[x.p0], points_[x.p1]);
   }
-  Site_2 point_site(int p0, int p1) const
-  {
-    return p0 == p1 ? Site_2::point(points_[p0]) : Site_2::segment(points_[p0], points_[p1]);
-  }
+  // the site of a generator of a vertex's triple
+  Site_2 triple_site(const int p[2]) const { return generator_site<Site_2>(points_, p); }
   // the generators that define vertex x (counter-clockwise around it)
   const Site_2* vertex_sites(int x)
   {
     require(!chds().vertex(x).is_corner());
     const auto& t = chds().disk(x).triple;
     require(t[0][0] != NO_INDEX);
-    for(int i = 0; i < 3; ++i) sites_[i] = point_site(t[i][0], t[i][1]);
+    for(int i = 0; i < 3; ++i) sites_[i] = triple_site(t[i]);
     return sites_;
   }
 
@@ -663,9 +661,8 @@ private:
     if(a.triple[0][0] == NO_INDEX || b.triple[0][0] == NO_INDEX)
       return false;
     return traits_.equal_medial_disks_2_object()(
-      point_site(a.triple[0][0], a.triple[0][1]), point_site(a.triple[1][0], a.triple[1][1]),
-      point_site(a.triple[2][0], a.triple[2][1]), point_site(b.triple[0][0], b.triple[0][1]),
-      point_site(b.triple[1][0], b.triple[1][1]), point_site(b.triple[2][0], b.triple[2][1]));
+      triple_site(a.triple[0]), triple_site(a.triple[1]), triple_site(a.triple[2]),
+      triple_site(b.triple[0]), triple_site(b.triple[1]), triple_site(b.triple[2]));
   }
 
   Hds& hds_;

@@ -360,10 +360,7 @@ private:
   }
 
   // The site of a generator of a vertex's triple (input points p[0], p[1]).
-  CGAL_PMA2_ALWAYS_INLINE Site_2 triple_site(const int p[2]) const
-  {
-    return p[0] == p[1] ? Site_2::point(points_[p[0]]) : Site_2::segment(points_[p[0]], points_[p[1]]);
-  }
+  CGAL_PMA2_ALWAYS_INLINE Site_2 triple_site(const int p[2]) const { return generator_site<Site_2>(points_, p); }
 
   // A new edge between `left` and `right`, leaving vertex `start`; its end is set later.
   int open_edge(int start, int left, int right)

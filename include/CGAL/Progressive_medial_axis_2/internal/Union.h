@@ -429,19 +429,19 @@ private:
     for(std::size_t v = 0; v < data.hds.vertex_capacity(); ++v) {
       auto& V = data.hds.vertex(int(v));
       if(!V.is_corner()) continue;
+      // (every corner has a point of the union: build_points() gives one to
+      // the closed chains of corners too)
       int input_point = V.input_point();
       renumber(v < vertices_a ? 0 : 1, input_point);
-      // (a corner inside a shared chain is left out of the result: see
-      // check_result(); its record keeps its old point)
-      CGAL_assertion(input_point >= 0 || !V.alive || V.halfedge == NO_INDEX);
-      if(input_point >= 0) V.set_input_point(input_point);
+      V.set_input_point(input_point);
     }
-    for(std::size_t d = 0; d < data.hds.disk_capacity(); ++d)
+    for(std::size_t d = 0; d < data.hds.disk_capacity(); ++d) {
+      const int x = d < disks_a ? 0 : 1;
       for(auto& t : data.hds.disk_record(d).triple) {
-        const int x = d < disks_a ? 0 : 1;
         renumber(x, t[0]);
         renumber(x, t[1]);
       }
+    }
   }
 
   // No cell and no vertex of the result refers to a place inside a shared
