@@ -52,7 +52,11 @@
 //      closes a ring around a hole.  On one thread, the parts are merged
 //      so, part after part, once all are built;
 //   3. the vertices made by these merges are resolved (their disks
-//      constructed), and the arrays of the triangles freed.
+//      constructed).
+// The triangles are numbered part by part (number_by_part()), and each
+// part's range of the triangles' arrays is given back to the system as
+// soon as the part is built (release_part()); the arrays are freed when
+// the last one is.
 // Between merges a shape may touch itself at a polygon vertex (the fan of
 // triangles around the vertex is interrupted by a diagonal not merged
 // yet); every corner of such a vertex is a vertex of the structure of its
@@ -82,12 +86,16 @@
 #if defined(__GLIBC__)
 #include <malloc.h>
 #endif
+#if defined(__linux__)
+#include <sys/mman.h>
+#endif
 
 #include <algorithm>
 #include <array>
 #include <atomic>
 #include <chrono>
 #include <cstddef>
+#include <cstdint>
 #include <limits>
 #include <memory>
 #include <vector>
@@ -176,7 +184,8 @@ constexpr double min_parallel_seconds = 0.016;
 /// From this many input points on, a one-shot gives the memory it freed back
 /// to the system (release_free_memory()) once its parts are prepared (the
 /// triangulation freed), once all its parts have started, and after the
-/// last part moved into the result.
+/// last part moved into the result; and each part's triangles once the
+/// part is built (release_part()).
 constexpr std::size_t min_release_points = 65536;
 
 /// Whether a one-shot of `min_release_points` or more gives the memory it
@@ -242,6 +251,27 @@ inline std::size_t arena_threads()
   return std::size_t((std::max)(1, tbb::this_task_arena::max_concurrency()));
 #else
   return 1;
+#endif
+}
+
+/// Gives the pages inside elements [b, e) of `v` back to the system (their
+/// contents are lost: the caller reads them no more); the partial pages at
+/// the two ends stay.  Linux (madvise MADV_DONTNEED); elsewhere nothing.
+/// The standard library has no way to free part of a vector's memory.
+template <class T>
+void release_pages(std::vector<T>& v, std::size_t b, std::size_t e)
+{
+#if defined(__linux__)
+  if(e <= b) return;
+  const std::uintptr_t page = 4096;
+  const std::uintptr_t first = (reinterpret_cast<std::uintptr_t>(v.data() + b) + page - 1) & ~(page - 1);
+  const std::uintptr_t last = reinterpret_cast<std::uintptr_t>(v.data() + e) & ~(page - 1);
+  if(first < last)
+    madvise(reinterpret_cast<void*>(first), last - first, MADV_DONTNEED);
+#else
+  (void)v;
+  (void)b;
+  (void)e;
 #endif
 }
 
@@ -321,6 +351,22 @@ public:
       const int a = part_[std::size_t(d[0])], b = part_[std::size_t(d[1])];
       if(a != b) joins[std::size_t((std::max)(a, b))].push_back(d);
     }
+    // The half-edges of the two sides of each of those diagonals, each
+    // written by the part that builds its triangle once it is built (in
+    // that part's structure's numbering, shifted when the part is moved),
+    // so that the part's triangles can go at once (release_part()).
+    // `join_side_of[p]` lists the sides in part p: (q, index in joins[q],
+    // which end).
+    std::vector<std::vector<std::array<int, 2> > > join_sides(P);
+    std::vector<std::vector<std::array<int, 3> > > join_side_of(P);
+    for(std::size_t q = 1; q < P; ++q) {
+      join_sides[q].assign(joins[q].size(), std::array<int, 2>{{NO_INDEX, NO_INDEX}});
+      for(std::size_t j = 0; j < joins[q].size(); ++j)
+        for(int end = 0; end < 2; ++end)
+          join_side_of[std::size_t(part_[std::size_t(joins[q][j][std::size_t(end)])])].push_back(
+            {{int(q), int(j), end}});
+    }
+    std::atomic<std::size_t> parts_built{0};
     std::vector<Hds> structures(P);
     std::vector<Divide_and_conquer_counts> part_counts(P);
     std::vector<double> part_seconds(P, 0);
@@ -353,11 +399,18 @@ public:
     // result's structure; their half-edges were numbered in their part's
     // structure, `offsets` says where it went)
     auto merge_joins = [&](std::size_t q, Divide_and_conquer_counts& c) {
-      for(const auto& d : joins[q]) {
-        const int h0 = side(d[0], d[1]), h1 = side(d[1], d[0]);
-        CGAL_assertion(h0 != NO_INDEX && h1 != NO_INDEX);
-        c.add(engine_.merge(h0 + offsets[std::size_t(part_[std::size_t(d[0])])].halfedge,
-                            h1 + offsets[std::size_t(part_[std::size_t(d[1])])].halfedge, c));
+      for(std::size_t j = 0; j < joins[q].size(); ++j) {
+        const std::array<int, 2>& h = join_sides[q][j];
+        CGAL_assertion(h[0] != NO_INDEX && h[1] != NO_INDEX);
+        c.add(engine_.merge(h[0], h[1], c));
+      }
+    };
+    // (by the thread that built part p, once it is built)
+    auto record_join_sides = [&](std::size_t p) {
+      for(const auto& x : join_side_of[p]) {
+        const auto& d = joins[std::size_t(x[0])][std::size_t(x[1])];
+        join_sides[std::size_t(x[0])][std::size_t(x[1])][std::size_t(x[2])] =
+          side(d[std::size_t(x[2])], d[std::size_t(1 - x[2])]);
       }
     };
     Divide_and_conquer_counts join_counts;   // (only the thread moving parts adds)
@@ -371,6 +424,8 @@ public:
         lock.unlock();   // (only this thread touches the result's structure)
         const bool starting = next_to_start.load() < P;
         offsets[q] = engine_.hds().append(structures[q], starting);
+        for(const auto& x : join_side_of[q])   // (the sides of part q, now in the result's numbering)
+          join_sides[std::size_t(x[0])][std::size_t(x[1])][std::size_t(x[2])] += offsets[q].halfedge;
         if(starting) {
           std::lock_guard<std::mutex> pool_lock(pool_mutex);
           pool.push_back(std::move(structures[q]));
@@ -412,7 +467,11 @@ public:
         Engine engine(hds, engine_.points(), engine_.traits());
         build_part(engine, int(p), part_counts[p], progress);
         engine.resolve_pending();
+        record_join_sides(p);
+        release_part(p);
       });
+      if(++parts_built == P)   // (no part reads the triangles any more)
+        free_triangles();
       if(!one_thread)
         move_built_parts(p);
       part_seconds[p] = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
@@ -430,7 +489,7 @@ public:
         build(p);
         seconds += part_seconds[p];
         done += size_[p];
-        parallel = next_to_start < P && seconds * double(triangles_.size() - done) >= min_parallel_seconds * double(done);
+        parallel = next_to_start < P && seconds * double(std::size_t(T) - done) >= min_parallel_seconds * double(done);
       }
     }
     if(parallel) {
@@ -453,19 +512,12 @@ public:
     const auto t_join = std::chrono::steady_clock::now();
 
     // 2. on one thread, the diagonals between parts (on several, the
-    // thread that moved each part merged them), then the arrays of the
-    // triangles freed
+    // thread that moved each part merged them; the arrays of the triangles
+    // were freed when the last part was built)
     if(one_thread)
       for(std::size_t q = 1; q < P; ++q) merge_joins(q, counts);
     CGAL_assertion(one_thread || next_to_move == P);
     counts.add(join_counts);
-    free_vector(parent_);
-    free_vector(part_);
-    free_vector(triangles_);
-    free_vector(sides_);
-    free_vector(added_);
-    free_vector(off_tree_);
-    probed_.clear();
     engine_.resolve_pending();
     counts.join_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t_join).count();
     return counts;
@@ -519,6 +571,7 @@ private:
     std::vector<int> order;
     spanning_tree(order);
     cut(parts == 0 ? 1 : parts, order);
+    number_by_part(order);
     sides_.assign(T, std::array<int, 3>{{NO_INDEX, NO_INDEX, NO_INDEX}});
     added_.assign(T, 0);
     probed_.clear();
@@ -590,6 +643,73 @@ private:
       }
       ++size_[std::size_t(part_[std::size_t(t)])];
     }
+  }
+
+  // Frees the arrays of the triangles (once every part is built).
+  void free_triangles()
+  {
+    free_vector(parent_);
+    free_vector(part_);
+    free_vector(triangles_);
+    free_vector(sides_);
+    free_vector(added_);
+    free_vector(off_tree_);
+    probed_.clear();
+  }
+
+  // Gives the memory of part p's triangles back to the system once the part
+  // is built (its range of the arrays: the triangles are numbered part by
+  // part, see number_by_part()).  No part reads another part's range after
+  // its `part_`, which is kept.  The peak of a large one-shot is at the end
+  // of its last part, the whole axis beside all the triangles' arrays (45
+  // bytes a triangle); on a plate of 100,000 holes the arrays were 36 MB of
+  // it (RESULTS.md, thirty-seventh session).
+  void release_part(std::size_t p)
+  {
+    if(engine_.points().size() < min_release_points) return;
+    const std::size_t b = start_[p], e = b + size_[p];
+    release_pages(triangles_, b, e);
+    release_pages(sides_, b, e);
+    release_pages(parent_, b, e);
+    release_pages(added_, b, e);
+  }
+
+  // Numbers the triangles part by part (part 0 first; in each part in the
+  // breadth-first `order`), so that each part's triangles are a range of
+  // the arrays (`start_`): in place, by the cycles of the permutation.  The
+  // parts are built in the same order as before it, so the axis is numbered
+  // the same.  (A second prepare() with another number of parts, which the
+  // one-shot does not make, would start its tree from another triangle:
+  // another cut, the same axis.)
+  void number_by_part(const std::vector<int>& order)
+  {
+    const std::size_t T = triangles_.size(), P = roots_.size();
+    start_.assign(P, 0);
+    for(std::size_t p = 1; p < P; ++p) start_[p] = start_[p - 1] + size_[p - 1];
+    std::vector<int> to(T);
+    {
+      std::vector<std::size_t> next(start_);
+      for(int t : order) to[std::size_t(t)] = int(next[std::size_t(part_[std::size_t(t)])]++);
+    }
+    auto renamed = [&](int t) { return t < 0 ? t : to[std::size_t(t)]; };
+    for(Triangle& x : triangles_)
+      for(int& n : x.nbr) n = renamed(n);
+    for(int& u : parent_) u = renamed(u);
+    for(auto& d : off_tree_) d = {{renamed(d[0]), renamed(d[1])}};
+    for(int& r : roots_) r = renamed(r);
+    // each element to its place, cycle by cycle (to[t] < 0: placed)
+    for(std::size_t t = 0; t < T; ++t) {
+      while(to[t] >= 0 && std::size_t(to[t]) != t) {
+        const std::size_t u = std::size_t(to[t]);
+        std::swap(triangles_[t], triangles_[u]);
+        std::swap(parent_[t], parent_[u]);
+        std::swap(to[t], to[u]);
+        to[u] = -1;
+      }
+      to[t] = -1;
+    }
+    for(std::size_t p = 0; p < P; ++p)
+      std::fill(part_.begin() + std::ptrdiff_t(start_[p]), part_.begin() + std::ptrdiff_t(start_[p] + size_[p]), int(p));
   }
 
   int side_towards(int u, int t) const { return internal::side_towards(triangles_, u, t); }
@@ -664,7 +784,7 @@ private:
       const int t = queue[progress.next];
       for(; progress.side < 3; ++progress.side) {
         const int u = triangles_[std::size_t(t)].nbr[progress.side];
-        if(u < 0 || parent_[std::size_t(u)] != t || part_[std::size_t(u)] != p) continue;
+        if(u < 0 || part_[std::size_t(u)] != p || parent_[std::size_t(u)] != t) continue;   // (part_ first: see release_part())
         if(queue.size() >= limit) return;   // (goes on from this side)
         add(engine, u, false, counts);
         added_[std::size_t(u)] = 1;
@@ -689,6 +809,7 @@ private:
   std::vector<Triangle> triangles_;
   std::vector<int> parent_, roots_, part_;
   std::vector<std::size_t> size_;   // triangles of each part
+  std::vector<std::size_t> start_;   // the first triangle of each part (see number_by_part())
   std::vector<std::array<int, 2> > off_tree_;
   std::vector<std::array<int, 3> > sides_;
   std::vector<char> added_;   // written by the part of each triangle only
