@@ -201,6 +201,14 @@ inline std::atomic<bool>& release_memory_of_large_one_shots()
   return on;
 }
 
+/// Whether a one-shot of `points` input points gives memory back to the
+/// system: from `min_release_points` on, if
+/// release_memory_of_large_one_shots() says so.
+inline bool gives_memory_back(std::size_t points)
+{
+  return points >= min_release_points && release_memory_of_large_one_shots().load(std::memory_order_relaxed);
+}
+
 /// In a one-shot of `points` input points, from `min_release_points` on and
 /// if release_memory_of_large_one_shots() says so, gives the memory that the
 /// allocator keeps free back to the system.  glibc keeps the blocks under
@@ -217,7 +225,7 @@ inline std::atomic<bool>& release_memory_of_large_one_shots()
 inline void release_free_memory(std::size_t points)
 {
 #if defined(__GLIBC__)
-  if(points >= min_release_points && release_memory_of_large_one_shots().load(std::memory_order_relaxed))
+  if(gives_memory_back(points))
     malloc_trim(0);
 #else
   (void)points;
@@ -659,14 +667,16 @@ private:
 
   // Gives the memory of part p's triangles back to the system once the part
   // is built (its range of the arrays: the triangles are numbered part by
-  // part, see number_by_part()).  No part reads another part's range after
-  // its `part_`, which is kept.  The peak of a large one-shot is at the end
-  // of its last part, the whole axis beside all the triangles' arrays (45
-  // bytes a triangle); on a plate of 100,000 holes the arrays were 36 MB of
-  // it (RESULTS.md, thirty-seventh session).
+  // part, see number_by_part()), where the one-shot gives memory back
+  // (gives_memory_back(): not where the program goes on computing, whose
+  // arrays would take those pages again, one fault each).  No part reads
+  // another part's range after its `part_`, which is kept.  The peak of a
+  // large one-shot is at the end of its last part, the whole axis beside
+  // all the triangles' arrays (45 bytes a triangle); on a plate of 100,000
+  // holes the arrays were 36 MB of it (RESULTS.md, thirty-seventh session).
   void release_part(std::size_t p)
   {
-    if(engine_.points().size() < min_release_points) return;
+    if(!gives_memory_back(engine_.points().size())) return;
     const std::size_t b = start_[p], e = b + size_[p];
     release_pages(triangles_, b, e);
     release_pages(sides_, b, e);
