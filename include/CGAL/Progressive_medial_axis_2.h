@@ -740,7 +740,7 @@ thread, one after the other, until the parts left would take about 16 ms
 or more there, and builds those in parallel; below 4,096 vertices it also
 checks the polygon on the calling thread, before the triangulation.
 Without oneTBB it runs sequentially.  The result is the same in all cases.  For a polygon of
-65,536 points or more, it gives the memory that glibc keeps free back to
+262,144 points or more, it gives the memory that glibc keeps free back to
 the system (`malloc_trim()`) once the triangulation is freed and the
 parts are prepared, once all parts have started, and after the last part
 moved into the result.

@@ -185,8 +185,16 @@ constexpr double min_parallel_seconds = 0.016;
 /// to the system (release_free_memory()) once its parts are prepared (the
 /// triangulation freed), once all its parts have started, and after the
 /// last part moved into the result; and each part's triangles once the
-/// part is built (release_part()).
-constexpr std::size_t min_release_points = 65536;
+/// part is built (release_part()).  Each release costs time: the pages
+/// given back are faulted in again, one by one and zeroed by the system,
+/// by whatever allocates next, and giving them back flushes the other
+/// CPU's TLB.  From 65,536 on, the releases took 10% of the time of a
+/// 128,000-vertex outline on two threads of the 2-core VM of RESULTS.md
+/// for 7 MB (10%) less peak memory, so they start at 262,144 points, where
+/// the peak is hundreds of megabytes: they lower the peak of a plate of
+/// 100,000 holes (600,000 points) by 20%, 74 MB, for 8% more time
+/// (RESULTS.md, thirty-eighth session).
+constexpr std::size_t min_release_points = 262144;
 
 /// Whether a one-shot of `min_release_points` or more gives the memory it
 /// freed back to the system (on by default).  A program that goes on
