@@ -11,13 +11,16 @@
 #include <CGAL/Progressive_medial_axis_2/internal/Mpfr_interval.h>
 #include <CGAL/Progressive_medial_axis_2/internal/One_root_rational.h>
 #include <CGAL/Progressive_medial_axis_2/internal/Nested_root_number.h>
+#include <CGAL/Progressive_medial_axis_2/internal/Medial_constructions.h>
 
 #include <pma_test/check.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <random>
 #include <type_traits>
 #include <vector>
@@ -353,6 +356,55 @@ void mpfr_interval_tests()
 
 // A double-double result is kept only if everything within its error bound
 // (from the width of the double interval) rounds to one double.
+// The interval square root of the interval stage (nt_sqrt(), which does not
+// leave the upward rounding) against MPFR's square roots rounded down and
+// up: the same doubles, on perfect squares, random doubles of every
+// exponent, subnormals, zero, intervals with a negative lower end and
+// infinity.
+void interval_sqrt_tests()
+{
+  typedef CGAL::Interval_nt<false> I;
+  std::mt19937_64 rng(11);
+  std::vector<double> xs = {0.0, -0.0, 1.0, 2.0, 4.0, 0.25, 1e-320, 4.9406564584124654e-324, 2.2250738585072014e-308,
+                            1.7976931348623157e308, 9007199254740993.0, 3.0, 1e300, 1e-300, HUGE_VAL};
+  for(int i = 1; i < 2000; ++i) xs.push_back(double(i) * double(i));
+  std::uniform_int_distribution<std::uint64_t> bits(0, 0x7FEFFFFFFFFFFFFFull);
+  for(int i = 0; i < 200000; ++i) {
+    std::uint64_t b = bits(rng);
+    double x;
+    std::memcpy(&x, &b, sizeof x);
+    xs.push_back(x);
+    xs.push_back(std::nextafter(x, 0.0) * std::nextafter(x, 0.0));
+  }
+  mpfr_t m;
+  mpfr_init2(m, 53);
+  int failures = 0;
+  CGAL::Protect_FPU_rounding<true> protection;
+  for(std::size_t k = 0; k < xs.size(); ++k) {
+    const double lo = xs[k], hi = xs[(k * 7919) % xs.size()];
+    const I x((std::min)(lo, hi), (std::max)(lo, hi));
+    const I r = CGAL::Progressive_medial_axes::internal::nt_sqrt(x);
+    double down = 0, up;
+    if(x.inf() > 0) {
+      mpfr_set_d(m, x.inf(), MPFR_RNDN);
+      mpfr_sqrt(m, m, MPFR_RNDD);
+      down = mpfr_get_d(m, MPFR_RNDD);
+    }
+    mpfr_set_d(m, x.sup(), MPFR_RNDN);
+    mpfr_sqrt(m, m, MPFR_RNDU);
+    up = mpfr_get_d(m, MPFR_RNDU);
+    if(!(r.inf() == down && r.sup() == up) && failures++ < 5)
+      std::printf("FAIL: sqrt([%.17g, %.17g]) = [%.17g, %.17g], expected [%.17g, %.17g]\n", x.inf(), x.sup(), r.inf(),
+                  r.sup(), down, up);
+  }
+  const I negative(-1.0, 4.0);
+  const I r = CGAL::Progressive_medial_axes::internal::nt_sqrt(negative);
+  if(!(r.inf() == 0 && r.sup() == 2)) ++failures;
+  mpfr_clear(m);
+  pma_test::failures() += failures;
+  CHECK(failures == 0, "interval square roots are MPFR's, rounded down and up");
+}
+
 void double_double_tests()
 {
   using CGAL::Progressive_medial_axes::internal::Double_double;
@@ -493,6 +545,7 @@ void double_double_interval_tests()
 
 int main()
 {
+  interval_sqrt_tests();
   double_double_tests();
   double_double_interval_tests();
   mpfr_interval_tests();

@@ -101,6 +101,36 @@ struct Sqrt_hook {
   }
 };
 
+#if !defined(__AVX512F__) && !defined(CGAL_ALWAYS_ROUND_TO_NEAREST)
+/// The square root of a double interval, in the upward rounding that
+/// `Interval_nt<false>` arithmetic runs in, without leaving it.  CGAL's
+/// `sqrt()` switches the rounding to downward for the lower bound and back
+/// (without AVX-512), and the two switches were most of the time of the
+/// interval stage's square roots (`perf annotate`, RESULTS.md, thirty-eighth
+/// session).  The lower bound is the same double: `r`, the square root of
+/// the lower end rounded up, is exact if `r * r` rounded up is that end
+/// (else `r * r` would exceed it), and otherwise the double below `r` is
+/// the root rounded down.  (CGAL's own code suggests this in a comment.)
+template <>
+struct Sqrt_hook<Interval_nt<false> > {
+  static Interval_nt<false> apply(const Interval_nt<false>& x)
+  {
+    double lower = 0;
+    if(x.inf() > 0) {
+      const double r = IA_sqrt_up(x.inf());
+      lower = r;
+      if(IA_opacify(r) * IA_opacify(r) != x.inf()) {
+        std::uint64_t bits;
+        std::memcpy(&bits, &r, sizeof bits);
+        --bits;   // (r > 0: the next double towards zero)
+        std::memcpy(&lower, &bits, sizeof bits);
+      }
+    }
+    return Interval_nt<false>(lower, IA_sqrt_up(x.sup()));
+  }
+};
+#endif
+
 template <class NT>
 NT nt_sqrt(const NT& x)
 {
