@@ -1250,7 +1250,7 @@ private:
       if(attempt == 1 && (s == nullptr || !Progressive_medial_axes::internal::refine_relations<CK>(
                                                t.s_, kind == Progressive_medial_axes::internal::TIME_VANISH ? &line : nullptr, rel)))
         break;
-      Protect_FPU_rounding<true> protection;
+      Progressive_medial_axes::internal::Upward_rounding protection;
       try {
         Interval v;
         Progressive_medial_axes::internal::To_nt_convert<Interval> cv;
@@ -1628,7 +1628,7 @@ private:
     for(int attempt = 0; attempt < 2; ++attempt) {
       if(attempt == 1 && !Progressive_medial_axes::internal::refine_relations<CK>(s, static_cast<const Site_2*>(nullptr), rel))
         break;
-      Protect_FPU_rounding<true> protection;
+      Progressive_medial_axes::internal::Upward_rounding protection;
       try {
         const int found = disk_nt_decided<Interval>(s, rel, circle);
         if(found >= 0)
