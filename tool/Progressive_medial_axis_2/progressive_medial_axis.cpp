@@ -372,8 +372,9 @@ void use_huge_pages(const Options& o, char** argv)
 void align_heap_to_huge_pages()
 {
 #if defined(__GLIBC__) && defined(__linux__)
-  static void* heap_gap = nullptr;
-  if(heap_gap != nullptr) return;
+  // (volatile: a block that nothing reads, the compiler would not allocate;
+  // static: kept reachable to the end)
+  static void* volatile heap_gap = nullptr;
   std::uintptr_t huge = std::uintptr_t(2) << 20;
   {
     std::ifstream in("/sys/kernel/mm/transparent_hugepage/hpage_pmd_size");
