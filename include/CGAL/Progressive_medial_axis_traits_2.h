@@ -361,7 +361,8 @@ Time_kind switch_time_kind(const Site_& line, const Site_& c, const Site_& a, co
 /// of integer grids end.
 template <class NT, class Site_, class Convert>
 bool evaluate_time(Time_kind kind, const Site_& c, const Site_* s, const Triple_relations& rel,
-                   const Convert& cv, NT& t, NT* rad = nullptr, bool* undecided = nullptr)
+                   const Convert& cv, NT& t, NT* rad = nullptr, bool* undecided = nullptr,
+                   Circle_nt<NT>* circle_out = nullptr)
 {
   auto outcome = [undecided](int found) {
     if(found >= 0 || undecided == nullptr)
@@ -395,6 +396,8 @@ bool evaluate_time(Time_kind kind, const Site_& c, const Site_* s, const Triple_
     if(!plausible_circle(sn, rel, circle))
       throw Uncertain_decision();
   }
+  if(circle_out != nullptr)
+    *circle_out = circle;
   if(kind == TIME_SWITCH) {
     t = foot_position(px, py, qx, qy, circle);
     return true;
@@ -696,6 +699,18 @@ public:
       Site_2 s[3] = {c, a, b};
       return Model::time(switch_time_kind<Kernel>(line, c, a, b), line, s, t);
     }
+    /// The same, where `hint` may enclose the disk's centre (see
+    /// Compute_vanishing_time_2).
+    template <class Hint>
+    bool operator()(const Site_2& line, const Site_2& c, const Site_2& a, const Site_2& b, Event_time_2& t,
+                    const Hint& hint) const
+    {
+      Site_2 s[3] = {c, a, b};
+      const Time_kind kind = switch_time_kind<Kernel>(line, c, a, b);
+      if(kind == TIME_SWITCH && hint.valid)
+        return Model::switch_time_from_hint(line, s, hint, t);
+      return Model::time(kind, line, s, t);
+    }
   };
 
   /// Time, along the separator `line`, of the foot of the point `p`.
@@ -713,6 +728,17 @@ public:
     {
       Site_2 s[3] = {a, b, d};
       return Model::time(TIME_VANISH, line, s, t);
+    }
+    /// The same, and where the model has a `Disk_hint`, `hint` is then
+    /// either invalid or an enclosure of the centre of the disk (in
+    /// interval arithmetic): the merge keeps it with the vertex that the
+    /// event makes, whose switch times are then computed from it.
+    template <class Hint>
+    bool operator()(const Site_2& line, const Site_2& a, const Site_2& b, const Site_2& d, Event_time_2& t,
+                    Hint& hint) const
+    {
+      Site_2 s[3] = {a, b, d};
+      return Model::time(TIME_VANISH, line, s, t, &hint);
     }
   };
 
@@ -1201,6 +1227,7 @@ public:
     std::size_t exact_ties = 0;                ///< comparisons that found two times equal (one-root, nested or mirror)
     std::size_t small_rational_overflows = 0;  ///< computations in 128-bit rationals redone in GMP rationals (a result overflowed)
     std::size_t mirror_ties = 0;               ///< ties found equal by a symmetry, without nested-root numbers (mirror_tie())
+    std::size_t hinted_switch_times = 0;       ///< switch times computed from the centre kept with their vertex (Disk_hint)
 
     /// Adds the counts of `b - a` (what another thread counted between two readings).
     void add_difference(const Filter_statistics& b, const Filter_statistics& a)
@@ -1219,6 +1246,7 @@ public:
       exact_ties += b.exact_ties - a.exact_ties;
       small_rational_overflows += b.small_rational_overflows - a.small_rational_overflows;
       mirror_ties += b.mirror_ties - a.mirror_ties;
+      hinted_switch_times += b.hinted_switch_times - a.hinted_switch_times;
     }
   };
   static Filter_statistics& filter_statistics()
@@ -1230,10 +1258,56 @@ public:
   /// The precision, in bits, of the MPFR stage (see Mpfr_interval::default_precision).
   static constexpr mpfr_prec_t mpfr_precision = Mpfr::default_precision;
 
+  /// An enclosure of the centre of a medial disk, from the interval stage
+  /// of the event time that found it.  Kept with a vertex of the axis
+  /// (Halfedge_structure::set_centre_hint()) as a centre and an error bound
+  /// in doubles: the centre lies within `err` of (x, y) in each coordinate.
+  struct Disk_hint {
+    bool valid = false;
+    Interval x, y;
+
+    /// (x, y) and err as said above; false if they are not finite.
+    bool to_doubles(double& cx, double& cy, double& err) const
+    {
+      cx = x.inf() / 2 + x.sup() / 2;
+      cy = y.inf() / 2 + y.sup() / 2;
+      // (each difference rounded to nearest is within half a unit of the
+      // last place of the exact one: the next double above bounds it)
+      const double e = (std::max)((std::max)(x.sup() - cx, cx - x.inf()), (std::max)(y.sup() - cy, cy - y.inf()));
+      err = std::nextafter(e, std::numeric_limits<double>::infinity());
+      return std::isfinite(cx) && std::isfinite(cy) && std::isfinite(err);
+    }
+    static Disk_hint from_doubles(double cx, double cy, double err)
+    {
+      Disk_hint h;
+      h.valid = true;
+      Progressive_medial_axes::internal::Upward_rounding protection;
+      const Interval e(-err, err);
+      h.x = Interval(cx) + e;
+      h.y = Interval(cy) + e;
+      return h;
+    }
+  };
+
 private:
+  // A switch time from the centre of its disk.
+  static bool switch_time_from_hint(const Site_2& line, const Site_2* s, const Disk_hint& hint, Event_time_2& t)
+  {
+    t.kind_ = Progressive_medial_axes::internal::TIME_SWITCH;
+    t.c_ = line;
+    for(int i = 0; i < 3; ++i) t.s_[i] = s[i];
+    t.exact_.reset();
+    ++filter_statistics().hinted_switch_times;
+    Progressive_medial_axes::internal::Upward_rounding protection;
+    const Interval px(line.p.x()), py(line.p.y()), qx(line.q.x()), qy(line.q.y());
+    t.approx_ = (qx - px) * (hint.x - px) + (qy - py) * (hint.y - py);
+    return true;
+  }
+
   // Evaluates a time: double intervals, double-double intervals, MPFR
-  // intervals, exactly.
-  static bool time(Progressive_medial_axes::internal::Time_kind kind, const Site_2& line, const Site_2* s, Event_time_2& t)
+  // intervals, exactly.  With `hint`, sets it from the interval stage.
+  static bool time(Progressive_medial_axes::internal::Time_kind kind, const Site_2& line, const Site_2* s, Event_time_2& t,
+                   Disk_hint* hint = nullptr)
   {
     t.kind_ = kind;
     t.c_ = line;
@@ -1255,12 +1329,20 @@ private:
         Interval v;
         Progressive_medial_axes::internal::To_nt_convert<Interval> cv;
         bool undecided = false;
+        Progressive_medial_axes::internal::Circle_nt<Interval> circle;
         bool ok = Progressive_medial_axes::internal::evaluate_time<Interval>(kind, line, t.s_, rel, cv, v, nullptr,
-                                                                               &undecided);
+                                                                               &undecided, hint ? &circle : nullptr);
         if(!ok && !undecided)
           return false;
         if(ok && CGAL_NTS is_finite(v.inf()) && CGAL_NTS is_finite(v.sup())) {
           t.approx_ = v;
+          if(hint != nullptr)
+            hint->valid = CGAL_NTS is_finite(circle.x.inf()) && CGAL_NTS is_finite(circle.x.sup()) &&
+                          CGAL_NTS is_finite(circle.y.inf()) && CGAL_NTS is_finite(circle.y.sup());
+          if(hint != nullptr && hint->valid) {
+            hint->x = circle.x;
+            hint->y = circle.y;
+          }
           return true;
         }
       } catch(Uncertain_conversion_exception&) {

@@ -406,11 +406,12 @@ auto print_filter_statistics(const Traits&, int) -> decltype(Traits::filter_stat
               "filter_rational_evaluations %zu\nfilter_exact_evaluations %zu\nfilter_mpfr_comparisons %zu\n"
               "filter_rational_comparisons %zu\nfilter_exact_comparisons %zu\nfilter_exact_ties %zu\n"
               "filter_small_rational_overflows %zu\nfilter_dd_interval_evaluations %zu\n"
-              "filter_dd_interval_comparisons %zu\nfilter_dd_interval_disks %zu\nfilter_mirror_ties %zu\n",
+              "filter_dd_interval_comparisons %zu\nfilter_dd_interval_disks %zu\nfilter_mirror_ties %zu\n"
+              "filter_hinted_switch_times %zu\n",
               f.interval_evaluations, f.double_double_evaluations, f.mpfr_evaluations, f.rational_evaluations,
               f.exact_evaluations, f.mpfr_comparisons, f.rational_comparisons, f.exact_comparisons, f.exact_ties,
               f.small_rational_overflows, f.dd_interval_evaluations, f.dd_interval_comparisons,
-              f.dd_interval_disks, f.mirror_ties);
+              f.dd_interval_disks, f.mirror_ties, f.hinted_switch_times);
 }
 
 template <class Traits>

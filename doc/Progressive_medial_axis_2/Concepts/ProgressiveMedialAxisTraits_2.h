@@ -88,6 +88,27 @@ public:
 
   /// @}
 
+  /// \name Optional: the centre of a disk kept with its vertex
+  /// A model may also provide a type `Disk_hint`, an enclosure of the centre
+  /// of a medial disk, with a member `bool valid`, a member function
+  /// `bool to_doubles(double& x, double& y, double& err) const` (the centre
+  /// lies within `err` of `(x, y)` in each coordinate; false where they are
+  /// not finite) and a static member
+  /// function `Disk_hint from_doubles(double x, double y, double err)`; and
+  /// the overloads
+  /// `bool Compute_vanishing_time_2::operator()(Site_2 line, Site_2 a, Site_2 b, Site_2 d, Event_time_2& t, Disk_hint& h)`,
+  /// which also sets `h` to an enclosure of the centre of the disk tangent
+  /// to `a, b, d` or leaves it invalid, and
+  /// `bool Compute_switch_time_2::operator()(Site_2 line, Site_2 c, Site_2 a, Site_2 b, Event_time_2& t, const Disk_hint& h)`,
+  /// where `h`, if valid, encloses the centre of the disk tangent to `c, a,
+  /// b`.  Where `FT` is a floating-point type, the merge then keeps the
+  /// centre of the disk of each vanishing event with the vertex the event
+  /// makes, until the vertex's disk is constructed, and computes the switch
+  /// times at that vertex from it.  `CGAL::Progressive_medial_axis_traits_2<K>`
+  /// provides them for filtering kernels (`CGAL::Epick`).
+  /// @{
+  /// @}
+
   /// Whether the event decisions are exact.
   static constexpr bool Has_exact_decisions = unspecified;
 

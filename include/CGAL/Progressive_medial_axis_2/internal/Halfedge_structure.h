@@ -20,8 +20,10 @@
 #include <CGAL/assertions.h>
 #include <CGAL/Progressive_medial_axis_2/internal/Inlining.h>
 
+#include <cmath>
 #include <cstddef>
 #include <stdexcept>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -246,7 +248,53 @@ public:
       y.triple[i][0] = faces_[f[i]].p0;
       y.triple[i][1] = faces_[f[i]].p1;
     }
+    if constexpr(std::is_floating_point<FT>::value)
+      y.radius = FT(0);   // (no centre hint)
     return v;
+  }
+
+  /// Where FT is a floating-point type, a pending vertex keeps, until its
+  /// disk is computed, an enclosure of its centre that the merge found when
+  /// it made the vertex: within `err` of (x, y) in each coordinate.  It is
+  /// kept in the disk's centre and radius, which a pending vertex does not
+  /// use yet (the radius holds -err: a negative zero or below marks it).
+  /// Switch times at the vertex are then computed from it (see
+  /// Medial_merge::collect_switches()): about two thirds of the switch
+  /// times of a one-shot of a real outline are at a vertex made by a
+  /// vanishing event (RESULTS.md, fortieth session).
+  void set_centre_hint(int v, double x, double y, double err)
+  {
+    if constexpr(std::is_floating_point<FT>::value) {
+      CGAL_precondition(vertices_[v].pending && !vertices_[v].is_corner() && err >= 0);
+      Disk& d = disk(v);
+      d.point = Point_2(x, y);
+      d.radius = -err;
+    } else {
+      (void)v;
+      (void)x;
+      (void)y;
+      (void)err;
+    }
+  }
+  /// The centre hint of vertex `v` (see set_centre_hint()), if it has one.
+  bool centre_hint(int v, double& x, double& y, double& err) const
+  {
+    if constexpr(std::is_floating_point<FT>::value) {
+      const Vertex& w = vertices_[v];
+      if(!w.pending || w.is_corner()) return false;
+      const Disk& d = disks_[w.slot];
+      if(!std::signbit(d.radius)) return false;
+      x = d.point.x();
+      y = d.point.y();
+      err = -d.radius;
+      return true;
+    } else {
+      (void)v;
+      (void)x;
+      (void)y;
+      (void)err;
+      return false;
+    }
   }
 
   void delete_vertex(int v)

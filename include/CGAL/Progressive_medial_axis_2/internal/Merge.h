@@ -75,6 +75,7 @@
 
 #include <algorithm>
 #include <cstddef>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -100,6 +101,19 @@ struct Merge_anomaly {};
 struct Null_merge_visitor {
   void on_switch() {}
   void on_vanish() {}
+};
+
+/// The traits' hint of a disk's centre (`Traits::Disk_hint`, optional in
+/// the concept), or an empty type where they have none.
+template <class Traits, class = void>
+struct Disk_hint_of {
+  static constexpr bool exists = false;
+  struct type {};
+};
+template <class Traits>
+struct Disk_hint_of<Traits, std::void_t<typename Traits::Disk_hint> > {
+  static constexpr bool exists = true;
+  typedef typename Traits::Disk_hint type;
 };
 
 template <class Traits>
@@ -241,10 +255,18 @@ private:
     int event;      // current vanishing candidate
     int opened;     // when right_he was opened (an index of times_)
   };
+  // Where the traits have a Disk_hint and FT is a floating-point type, the
+  // centre of the disk of each vanishing event is kept with the vertex
+  // that the event makes, and the switch times at that vertex are computed
+  // from it (see Halfedge_structure::set_centre_hint()).
+  typedef typename Disk_hint_of<Traits>::type Disk_hint;
+  static constexpr bool Hints = Disk_hint_of<Traits>::exists && std::is_floating_point<FT>::value;
   struct Event {
     Time time;
     int node;
     bool valid;
+    Disk_hint hint;   // (where the traits have one) the centre of the event's disk,
+    int hint_faces[2];   // tangent to these faces and the node's
   };
   struct Switch {
     // (the time is computed afterwards, in the switch's place in its list)
@@ -473,10 +495,45 @@ private:
     for(int w : slit_inner_) hds_.remove_degree_two_vertex(w);
   }
 
+  // Whether the generators of faces f[0..2] are those of the triple of a
+  // disk, in the same cyclic order.
+  bool same_triple(const int (&triple)[3][2], const int (&f)[3]) const
+  {
+    int p[3][2];
+    for(int i = 0; i < 3; ++i) {
+      const Hds_face& x = chds().face(f[i]);
+      p[i][0] = x.p0;
+      p[i][1] = x.p1;
+    }
+    for(int r = 0; r < 3; ++r) {
+      bool same = true;
+      for(int i = 0; i < 3 && same; ++i)
+        same = p[(i + r) % 3][0] == triple[i][0] && p[(i + r) % 3][1] == triple[i][1];
+      if(same) return true;
+    }
+    return false;
+  }
+
+  // The switch time at vertex w of the cell of face `fc` (site `c`), whose
+  // disk is tangent to the generators of faces fc, fa and fb in that order:
+  // from the centre kept with w where it has one (Disk_hint), else from the
+  // sites.
+  bool switch_time_at(int w, const Site_2& c, int fc, int fa, int fb, Time& t) const
+  {
+    typename Traits::Compute_switch_time_2 switch_time = traits_.compute_switch_time_2_object();
+    if constexpr(Hints) {
+      double x, y, err;
+      const int f[3] = {fc, fa, fb};
+      if(chds().centre_hint(w, x, y, err) && same_triple(chds().disk(w).triple, f)) {
+        return switch_time(line_, c, site(fa), site(fb), t, Disk_hint::from_doubles(x, y, err));
+      }
+    }
+    return switch_time(line_, c, site(fa), site(fb), t);
+  }
+
   // ---- the switch points of both cells, in order along the separator ----
   void collect_switches()
   {
-    typename Traits::Compute_switch_time_2 switch_time = traits_.compute_switch_time_2_object();
     const int k = int(plus_.size());
     switch_vertex_plus_.assign(k > 0 ? k - 1 : 0, NO_INDEX);
     sw_plus_.clear();
@@ -488,7 +545,7 @@ private:
       const int w = hds_.target(plus_[j - 1]);
       const int G = face_across(plus_[j - 1]), Gp = face_across(plus_[j]);
       Switch& s = sw_plus_.emplace_back(w, G, Gp, Hds::twin(plus_[j - 1]), Hds::twin(plus_[j]));
-      if(!switch_time(line_, site_p_, site(G), site(Gp), s.time))
+      if(!switch_time_at(w, site_p_, Cp_, G, Gp, s.time))
         s.time = traits_.compute_foot_time_2_object()(line_, vertex_point(w));
     }
     const int km = int(minus_.size());
@@ -502,7 +559,7 @@ private:
       const int w = hds_.target(minus_[j - 1]);
       const int Gp = face_across(minus_[j - 1]), G = face_across(minus_[j]);
       Switch& s = sw_minus_.emplace_back(w, G, Gp, Hds::twin(minus_[j]), Hds::twin(minus_[j - 1]));
-      if(!switch_time(line_, site_m_, site(Gp), site(G), s.time))
+      if(!switch_time_at(w, site_m_, Cm_, Gp, G, s.time))
         s.time = traits_.compute_foot_time_2_object()(line_, vertex_point(w));
     }
   }
@@ -540,8 +597,12 @@ private:
     // clears the queue first)
     const int ev = int(events_.size());
     Event& e = events_.emplace_back();
-    if(!traits_.compute_vanishing_time_2_object()(line_, site(fa), site(fb), site(fc), e.time) ||
-       traits_.is_event_in_past_2_object()(e.time, now(), line_)) {
+    bool found;
+    if constexpr(Hints)
+      found = traits_.compute_vanishing_time_2_object()(line_, site(fa), site(fb), site(fc), e.time, e.hint);
+    else
+      found = traits_.compute_vanishing_time_2_object()(line_, site(fa), site(fb), site(fc), e.time);
+    if(!found || traits_.is_event_in_past_2_object()(e.time, now(), line_)) {
       events_.pop_back();
       return;
     }
@@ -551,6 +612,8 @@ private:
     }
     e.node = n;
     e.valid = true;
+    e.hint_faces[0] = fa;
+    e.hint_faces[1] = fc;
     nodes_[n].event = ev;
     CGAL_PMA2_TRACE_MSG("    candidate node " << n << " (" << face_string(fa) << " " << face_string(fb) << " " << face_string(fc)
                         << ") t=" << approx(e.time));
@@ -715,7 +778,7 @@ private:
         const int n = events_[ev].node;
         pop_event();                    // (marks the event, keeps its record)
         advance_time(events_[ev].time);
-        vanish(n);
+        vanish(n, ev);
         visitor.on_vanish();
       }
     }
@@ -757,12 +820,23 @@ private:
   }
 
   // Algorithm 2: the generator of node n leaves L at a new branch point.
-  void vanish(int n)
+  // The vanishing of node n's generator, at event `ev` if it has one.
+  void vanish(int n, int ev = NO_INDEX)
   {
     ++stats_.vanishings;
     const int a = nodes_[n].prev, c = nodes_[n].next;
     const int fa = nodes_[a].face, fc = nodes_[c].face;
     const int v = hds_.new_pending_vertex(fa, nodes_[n].face, fc);
+    if constexpr(Hints) {
+      // (the disk of the event, if the node's neighbours are those of the event)
+      const Event* e = ev != NO_INDEX ? &events_[std::size_t(ev)] : nullptr;
+      if(e != nullptr && e->hint.valid && e->hint_faces[0] == fa && e->hint_faces[1] == fc) {
+        const Disk_hint& hint = e->hint;
+        double x, y, err;
+        if(hint.to_doubles(x, y, err))
+          hds_.set_centre_hint(v, x, y, err);
+      }
+    }
     const int AB = nodes_[a].right_he, BC = nodes_[n].right_he;
     close_edge(a, v);
     close_edge(n, v);
