@@ -507,15 +507,15 @@ void data_tests(Checker<Traits>& checker, const Options& o)
   }
 }
 
-// The counter of the exact-decision traits' ties decided by symmetry
-// (none for other traits).
-template <class Traits>
-auto mirror_ties(int) -> decltype(Traits::filter_statistics().mirror_ties, std::optional<std::size_t>())
+// A counter of the exact-decision traits' filter statistics, read by
+// `get` (none for other traits): filter_counter<Traits>(get, 0).
+template <class Traits, class Get>
+auto filter_counter(const Get& get, int) -> decltype(Traits::filter_statistics(), std::optional<std::size_t>())
 {
-  return Traits::filter_statistics().mirror_ties;
+  return get(Traits::filter_statistics());
 }
-template <class Traits>
-std::optional<std::size_t> mirror_ties(long)
+template <class Traits, class Get>
+std::optional<std::size_t> filter_counter(const Get&, long)
 {
   return std::nullopt;
 }
@@ -579,7 +579,7 @@ void degenerate_tests(Checker<Traits>& checker, const Options& o)
   // by symmetry: the comparisons above tested that rule against the oracle
   // (and, in the build with CGAL_PMA2_CHECK_MIRROR_TIES, each such tie
   // against the nested-root numbers)
-  if(const std::optional<std::size_t> mirror = mirror_ties<Traits>(0)) {
+  if(const std::optional<std::size_t> mirror = filter_counter<Traits>([](const auto& f) { return f.mirror_ties; }, 0)) {
     std::cout << "degenerate: " << *mirror << " ties decided by symmetry in this thread\n";
     CHECK(*mirror > 0, "no tie was decided by symmetry");
   }
@@ -1140,20 +1140,6 @@ void regression_tests(Checker<Traits>& checker, const Options&)
             << " where the oracle failed), the default one-shot and its way out\n";
 }
 
-// The counter of the exact-decision traits' computations in 128-bit
-// rationals that overflowed and were redone in GMP rationals (0 for other
-// traits).
-template <class Traits>
-auto small_rational_overflows(int) -> decltype(Traits::filter_statistics().small_rational_overflows)
-{
-  return Traits::filter_statistics().small_rational_overflows;
-}
-template <class Traits>
-std::size_t small_rational_overflows(long)
-{
-  return 0;
-}
-
 // The exact-decision traits' centre hints (Disk_hint): kept as a centre
 // and an error bound in doubles, they must still enclose the intervals they
 // came from (random intervals, of widths from none to wide); and the
@@ -1189,16 +1175,6 @@ auto disk_hint_tests(int) -> decltype(typename Traits::Disk_hint(), void())
 template <class Traits>
 void disk_hint_tests(long) {}
 
-template <class Traits>
-auto hinted_switch_times(int) -> decltype(Traits::filter_statistics().hinted_switch_times, std::optional<std::size_t>())
-{
-  return Traits::filter_statistics().hinted_switch_times;
-}
-template <class Traits>
-std::optional<std::size_t> hinted_switch_times(long)
-{
-  return std::nullopt;
-}
 
 template <class Traits>
 int run_all(const Options& o)
@@ -1227,7 +1203,8 @@ int run_all(const Options& o)
 #endif
   // the switch times at vertices made by vanishing events, computed from
   // the centres kept with them, were compared with the oracle above
-  if(const std::optional<std::size_t> hinted = hinted_switch_times<Traits>(0)) {
+  if(const std::optional<std::size_t> hinted =
+       filter_counter<Traits>([](const auto& f) { return f.hinted_switch_times; }, 0)) {
     std::cout << *hinted << " switch times computed from a centre kept with their vertex, in this thread\n";
     if(wanted("random") || wanted("holes") || wanted("data"))
       CHECK(*hinted > 0, "no switch time was computed from a centre kept with its vertex");
@@ -1236,7 +1213,10 @@ int run_all(const Options& o)
   // this build's 128-bit rationals overflow early (engine.cmake): the
   // comparisons above tested the fallbacks to GMP rationals only if some ran
   if(o.traits == "filtered") {
-    const std::size_t overflows = small_rational_overflows<Traits>(0);
+    // (the exact-decision traits' computations in 128-bit rationals that
+    // overflowed and were redone in GMP rationals)
+    const std::size_t overflows =
+      filter_counter<Traits>([](const auto& f) { return f.small_rational_overflows; }, 0).value_or(0);
     std::cout << overflows << " computations in 128-bit rationals redone in GMP rationals (limit "
               << CGAL_PMA2_SMALL_RATIONAL_TEST_BITS << " bits)\n";
     CHECK(overflows > 0, "no computation in 128-bit rationals overflowed");
