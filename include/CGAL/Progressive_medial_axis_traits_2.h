@@ -1300,7 +1300,8 @@ private:
     ++filter_statistics().hinted_switch_times;
     Progressive_medial_axes::internal::Upward_rounding protection;
     const Interval px(line.p.x()), py(line.p.y()), qx(line.q.x()), qy(line.q.y());
-    t.approx_ = (qx - px) * (hint.x - px) + (qy - py) * (hint.y - py);
+    t.approx_ = Progressive_medial_axes::internal::foot_position(
+      px, py, qx, qy, Progressive_medial_axes::internal::Circle_nt<Interval>{hint.x, hint.y, Interval(0)});
     return true;
   }
 
@@ -1336,10 +1337,8 @@ private:
           return false;
         if(ok && CGAL_NTS is_finite(v.inf()) && CGAL_NTS is_finite(v.sup())) {
           t.approx_ = v;
-          if(hint != nullptr)
-            hint->valid = CGAL_NTS is_finite(circle.x.inf()) && CGAL_NTS is_finite(circle.x.sup()) &&
-                          CGAL_NTS is_finite(circle.y.inf()) && CGAL_NTS is_finite(circle.y.sup());
-          if(hint != nullptr && hint->valid) {
+          if(hint != nullptr) {   // (to_doubles() says whether its bounds are finite)
+            hint->valid = true;
             hint->x = circle.x;
             hint->y = circle.y;
           }

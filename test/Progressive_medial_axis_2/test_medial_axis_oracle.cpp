@@ -1142,8 +1142,8 @@ void regression_tests(Checker<Traits>& checker, const Options&)
 
 // The exact-decision traits' centre hints (Disk_hint): kept as a centre
 // and an error bound in doubles, they must still enclose the intervals they
-// came from (random intervals, of widths from none to wide); and the
-// switch times computed from them (none for other traits).
+// came from (random intervals, of widths from none to wide; other traits
+// have none).
 template <class Traits>
 auto disk_hint_tests(int) -> decltype(typename Traits::Disk_hint(), void())
 {
@@ -1174,7 +1174,6 @@ auto disk_hint_tests(int) -> decltype(typename Traits::Disk_hint(), void())
 }
 template <class Traits>
 void disk_hint_tests(long) {}
-
 
 template <class Traits>
 int run_all(const Options& o)

@@ -264,37 +264,24 @@ public:
   /// vanishing event (RESULTS.md, fortieth session).
   void set_centre_hint(int v, double x, double y, double err)
   {
-    if constexpr(std::is_floating_point<FT>::value) {
-      CGAL_precondition(vertices_[v].pending && !vertices_[v].is_corner() && err >= 0);
-      Disk& d = disk(v);
-      d.point = Point_2(x, y);
-      d.radius = -err;
-    } else {
-      (void)v;
-      (void)x;
-      (void)y;
-      (void)err;
-    }
+    static_assert(std::is_floating_point<FT>::value, "centre hints need a floating-point FT");
+    CGAL_precondition(vertices_[v].pending && !vertices_[v].is_corner() && err >= 0);
+    Disk& d = disk(v);
+    d.point = Point_2(x, y);
+    d.radius = -err;
   }
   /// The centre hint of vertex `v` (see set_centre_hint()), if it has one.
   bool centre_hint(int v, double& x, double& y, double& err) const
   {
-    if constexpr(std::is_floating_point<FT>::value) {
-      const Vertex& w = vertices_[v];
-      if(!w.pending || w.is_corner()) return false;
-      const Disk& d = disks_[w.slot];
-      if(!std::signbit(d.radius)) return false;
-      x = d.point.x();
-      y = d.point.y();
-      err = -d.radius;
-      return true;
-    } else {
-      (void)v;
-      (void)x;
-      (void)y;
-      (void)err;
-      return false;
-    }
+    static_assert(std::is_floating_point<FT>::value, "centre hints need a floating-point FT");
+    const Vertex& w = vertices_[v];
+    if(!w.pending || w.is_corner()) return false;
+    const Disk& d = disks_[w.slot];
+    if(!std::signbit(d.radius)) return false;
+    x = d.point.x();
+    y = d.point.y();
+    err = -d.radius;
+    return true;
   }
 
   void delete_vertex(int v)

@@ -524,9 +524,8 @@ private:
     if constexpr(Hints) {
       double x, y, err;
       const int f[3] = {fc, fa, fb};
-      if(chds().centre_hint(w, x, y, err) && same_triple(chds().disk(w).triple, f)) {
+      if(chds().centre_hint(w, x, y, err) && same_triple(chds().disk(w).triple, f))
         return switch_time(line_, c, site(fa), site(fb), t, Disk_hint::from_doubles(x, y, err));
-      }
     }
     return switch_time(line_, c, site(fa), site(fb), t);
   }
@@ -819,8 +818,8 @@ private:
     recheck_arm(nodes_[last].prev);
   }
 
-  // Algorithm 2: the generator of node n leaves L at a new branch point.
-  // The vanishing of node n's generator, at event `ev` if it has one.
+  // Algorithm 2: the generator of node n leaves L at a new branch point
+  // (at event `ev`, if it has one).
   void vanish(int n, int ev = NO_INDEX)
   {
     ++stats_.vanishings;
@@ -830,12 +829,10 @@ private:
     if constexpr(Hints) {
       // (the disk of the event, if the node's neighbours are those of the event)
       const Event* e = ev != NO_INDEX ? &events_[std::size_t(ev)] : nullptr;
-      if(e != nullptr && e->hint.valid && e->hint_faces[0] == fa && e->hint_faces[1] == fc) {
-        const Disk_hint& hint = e->hint;
-        double x, y, err;
-        if(hint.to_doubles(x, y, err))
-          hds_.set_centre_hint(v, x, y, err);
-      }
+      double x, y, err;
+      if(e != nullptr && e->hint.valid && e->hint_faces[0] == fa && e->hint_faces[1] == fc &&
+         e->hint.to_doubles(x, y, err))
+        hds_.set_centre_hint(v, x, y, err);
     }
     const int AB = nodes_[a].right_he, BC = nodes_[n].right_he;
     close_edge(a, v);
