@@ -19,7 +19,8 @@
 // the diagonals off the tree (exactly one per hole) are the "hole-closing"
 // diagonals.  The tree is cut into `parts` connected subtrees of about
 // equal size (a greedy bottom-up cut: a subtree is cut off as soon as it
-// holds the target number of triangles).  Every part is a union of
+// holds the target number of triangles; on several threads the last parts
+// to start are smaller, see cut()).  Every part is a union of
 // triangles joined along diagonals, so the axis of a part is computed by
 // merges along single diagonals, whose two ends are polygon vertices: no
 // merge ever meets a point that is not a vertex of the input.
@@ -642,8 +643,9 @@ private:
   // breadth-first order are cut into parts `tail_divisor` times smaller
   // (their subtrees hold only triangles after them in that order): the
   // threads end closer together, for a few more diagonals between parts.
-  // On two threads that took 1.4% to 3% off the whole tool on three real
-  // outlines (RESULTS.md, forty-first session).
+  // On two threads (60 parts instead of 25 on c1m_CHN_0) the whole tool
+  // took 0% to 3% less time on three real outlines, in runs of a noisy VM
+  // (RESULTS.md, forty-first session).
   static constexpr std::size_t tail_parts = 8;
   static constexpr int tail_divisor = 8;
   void cut(std::size_t parts, const std::vector<int>& order)
