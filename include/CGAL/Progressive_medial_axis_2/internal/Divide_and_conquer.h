@@ -645,14 +645,19 @@ private:
   // threads end closer together, for a few more diagonals between parts.
   // On two threads (60 parts instead of 25 on c1m_CHN_0) the whole tool
   // took 0% to 3% less time on three real outlines, in runs of a noisy VM
-  // (RESULTS.md, forty-first session).
+  // (RESULTS.md, forty-first session).  Only parts of `min_tail_target`
+  // triangles or more are cut so: smaller ones take a few milliseconds at
+  // most, and the cut of small polygons stays the one that the probe's
+  // choice of a driver was measured on (a glyph of 646 triangles otherwise
+  // took the divide and conquer where boundary evolution is cheaper).
   static constexpr std::size_t tail_parts = 8;
   static constexpr int tail_divisor = 8;
+  static constexpr int min_tail_target = 256;
   void cut(std::size_t parts, const std::vector<int>& order)
   {
     const int T = int(triangles_.size());
     const int target = (std::max)(1, int((std::size_t(T) + parts - 1) / parts));
-    const bool taper = parts > 1 && arena_threads() > 1;
+    const bool taper = parts > 1 && arena_threads() > 1 && target / tail_divisor >= min_tail_target;
     const std::size_t tail_from =
       taper ? order.size() - (std::min)(order.size(), tail_parts * std::size_t(target)) : order.size();
     const int tail_target = (std::max)(1, target / tail_divisor);
