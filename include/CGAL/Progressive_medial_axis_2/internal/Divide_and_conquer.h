@@ -645,11 +645,12 @@ private:
   // threads end closer together, for a few more diagonals between parts.
   // On two threads (60 parts instead of 25 on c1m_CHN_0) the whole tool
   // took 0% to 3% less time on three real outlines, in runs of a noisy VM
-  // (RESULTS.md, forty-first session).  Only parts of `min_tail_target`
-  // triangles or more are cut so: smaller ones take a few milliseconds at
-  // most, and the cut of small polygons stays the one that the probe's
-  // choice of a driver was measured on (a glyph of 646 triangles otherwise
-  // took the divide and conquer where boundary evolution is cheaper).
+  // (RESULTS.md, forty-first session).  This is done only where the
+  // smaller parts still hold `min_tail_target` triangles or more (parts of
+  // 2,048): smaller parts take a few milliseconds at most, and the cut of
+  // small polygons stays the one that the probe's choice of a driver was
+  // measured on (a glyph of 646 triangles otherwise took the divide and
+  // conquer where boundary evolution is cheaper).
   static constexpr std::size_t tail_parts = 8;
   static constexpr int tail_divisor = 8;
   static constexpr int min_tail_target = 256;
@@ -657,10 +658,10 @@ private:
   {
     const int T = int(triangles_.size());
     const int target = (std::max)(1, int((std::size_t(T) + parts - 1) / parts));
-    const bool taper = parts > 1 && arena_threads() > 1 && target / tail_divisor >= min_tail_target;
+    const int tail_target = target / tail_divisor;
+    const bool taper = parts > 1 && arena_threads() > 1 && tail_target >= min_tail_target;
     const std::size_t tail_from =
       taper ? order.size() - (std::min)(order.size(), tail_parts * std::size_t(target)) : order.size();
-    const int tail_target = (std::max)(1, target / tail_divisor);
     std::vector<int> size(std::size_t(T), 1);
     std::vector<char> is_root(std::size_t(T), 0);
     for(std::size_t i = order.size(); i-- > 0;) {
