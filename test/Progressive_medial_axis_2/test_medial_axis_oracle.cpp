@@ -101,6 +101,10 @@ CGAL::Progressive_medial_axis_driver g_driver = CGAL::REGION_GROWING;
 // one-shots whose triangulation was split along a chord (main() lowers the
 // size from which it is, so that the random polygons take that path)
 std::size_t g_split_one_shots = 0;
+// One-shots whose last parts were cut smaller (main() lowers the size from
+// which this is done, for the test polygons, which are small).
+std::size_t g_tapered_one_shots = 0;
+int g_default_min_tail_target = 0;
 
 struct Options {
   bool quick = false;
@@ -391,6 +395,8 @@ bool run_polygon(Checker<Traits>& checker, const Rings& rings, const std::string
     CHECK(stats.anomalies == 0, what << ": " << stats.anomalies << " forced events in the one-shot");
     CHECK(stats.region_growing_one_shots == 0, what << ": the one-shot met an anomaly and was computed again by region growing");
     g_split_one_shots += stats.split_triangulations;
+    // (the last parts cut smaller: several times the parts asked for)
+    if(stats.parts > parts + 1) ++g_tapered_one_shots;
     // never where a vertex lies inside an edge: its point and its edge could
     // fall on different sides, unseen by both
     if(stats.split_triangulations != 0)
@@ -598,6 +604,11 @@ void fine_tests(Checker<Traits>& checker, const Options&)
 {
   namespace I = CGAL::Progressive_medial_axes::internal;
   typedef typename Traits::Kernel Kernel;
+  // the driver is chosen on the default cut, which main() changed
+  struct Default_tail {
+    const int lowered = I::divide_and_conquer_min_tail_target().exchange(g_default_min_tail_target);
+    ~Default_tail() { I::divide_and_conquer_min_tail_target() = lowered; }
+  } default_tail;
   std::size_t count = 0;
   for(const std::string& f : list_wkt(std::string(PMA_TEST_DATA) + "/glyphs_fine")) {
     const Rings rings = pma_tool::read_polygon_file<Point>(f);
@@ -1200,6 +1211,12 @@ int run_all(const Options& o)
      g_driver == CGAL::REGION_GROWING && (wanted("random") || wanted("holes")))
     CHECK(g_split_one_shots > 0, "no one-shot triangulated its polygon in two sides");
 #endif
+  std::cout << g_tapered_one_shots << " one-shots with their last parts cut smaller\n";
+#ifdef CGAL_PMA2_USE_TBB
+  if(tbb::this_task_arena::max_concurrency() > 1 && g_driver == CGAL::REGION_GROWING &&
+     (wanted("random") || wanted("holes")))
+    CHECK(g_tapered_one_shots > 0, "no one-shot cut its last parts smaller");
+#endif
   // the switch times at vertices made by vanishing events, computed from
   // the centres kept with them, were compared with the oracle above
   if(const std::optional<std::size_t> hinted =
@@ -1250,6 +1267,9 @@ int main(int argc, char** argv)
   // (every one-shot of 16 vertices or more on two threads tries to split
   // its triangulation, not only those of 32,768 or more)
   CGAL::Progressive_medial_axes::internal::split_triangulation_min_vertices() = 16;
+  // (and every one-shot on two threads whose parts hold 8 triangles or more
+  // cuts its last parts smaller, not only those whose parts hold 2,048)
+  g_default_min_tail_target = CGAL::Progressive_medial_axes::internal::divide_and_conquer_min_tail_target().exchange(1);
   if(o.traits == "epick") return run_all<CGAL::Progressive_medial_axis_traits_2<CGAL::Simple_cartesian<double> > >(o);
   if(o.traits == "exact") return run_all<CGAL::Progressive_medial_axis_traits_2<CGAL::Simple_cartesian<CORE::Expr> > >(o);
   return run_all<CGAL::Progressive_medial_axis_traits_2<CGAL::Epick> >(o);

@@ -271,6 +271,17 @@ inline std::size_t arena_threads()
 #endif
 }
 
+/// Where a one-shot's parts run on several threads, the parts that start
+/// last are cut smaller, but only if these smaller parts still hold this
+/// many triangles (see `Divide_and_conquer::cut()`).  A setting, so that
+/// the tests, whose polygons are small, can lower it and check that cut
+/// against the oracle; 256 by default.
+inline std::atomic<int>& divide_and_conquer_min_tail_target()
+{
+  static std::atomic<int> triangles{256};
+  return triangles;
+}
+
 /// Gives the pages inside elements [b, e) of `v` back to the system (their
 /// contents are lost: the caller reads them no more); the partial pages at
 /// the two ends stay.  Linux (madvise MADV_DONTNEED); elsewhere nothing.
@@ -646,19 +657,20 @@ private:
   // On two threads (60 parts instead of 25 on c1m_CHN_0) the whole tool
   // took 0% to 3% less time on three real outlines, in runs of a noisy VM
   // (RESULTS.md, forty-first session).  This is done only where the
-  // smaller parts still hold `min_tail_target` triangles or more (parts of
-  // 2,048): smaller parts take a few milliseconds at most, and the cut of
-  // small polygons stays the one that the probe's choice of a driver was
-  // measured on (a glyph of 646 triangles otherwise took the divide and
-  // conquer where boundary evolution is cheaper).
+  // smaller parts still hold divide_and_conquer_min_tail_target() (256)
+  // triangles or more (parts of 2,048): smaller parts take a few
+  // milliseconds at most, and the cut of small polygons stays the one that
+  // the probe's choice of a driver was measured on (a glyph of 646
+  // triangles otherwise took the divide and conquer where boundary
+  // evolution is cheaper).
   static constexpr std::size_t tail_parts = 8;
   static constexpr int tail_divisor = 8;
-  static constexpr int min_tail_target = 256;
   void cut(std::size_t parts, const std::vector<int>& order)
   {
     const int T = int(triangles_.size());
     const int target = (std::max)(1, int((std::size_t(T) + parts - 1) / parts));
     const int tail_target = target / tail_divisor;
+    const int min_tail_target = (std::max)(1, divide_and_conquer_min_tail_target().load(std::memory_order_relaxed));
     const bool taper = parts > 1 && arena_threads() > 1 && tail_target >= min_tail_target;
     const std::size_t tail_from =
       taper ? order.size() - (std::min)(order.size(), tail_parts * std::size_t(target)) : order.size();
