@@ -523,12 +523,26 @@ inline bool one_shot_takes_way_out(std::size_t anomalies)
 /// thirty-first session).  Region growing closes its rings along other
 /// diagonals.  Throws `std::runtime_error` if it meets an anomaly too: no
 /// axis is better than a wrong one.
+///
+/// With the double model, the anomaly more likely comes from a decision
+/// that the rounding errors got wrong without tripping its checks (on a
+/// grid moved off by 1e-6, where edges are nearly parallel, the axis of a
+/// region-growing step differed from the exact one before any anomaly),
+/// and region growing in doubles met anomalies too: the way out then
+/// takes exact decisions, the double model's fallback (RESULTS.md,
+/// forty-second session).
 template <class Traits>
 void one_shot_by_region_growing(const std::vector<std::vector<typename Traits::Kernel::Point_2> >& rings,
                                 const Traits& traits,
                                 Medial_axis_data<typename Traits::Point_2, typename Traits::FT>& data,
                                 Progressive_medial_axis_statistics& stats)
 {
+  typedef typename Exact_fallback<Traits>::type Fallback;
+  if constexpr(!std::is_void<Fallback>::value) {
+    (void)traits;
+    one_shot_by_region_growing(rings, Fallback(), data, stats);
+    return;
+  }
   set_points(data, rings, traits.orientation_2_object());
   Medial_axis_engine<Traits> engine(data, traits);
   Region_growing<Traits> driver(engine);

@@ -4,7 +4,7 @@ pma_add_test_program(test_medial_axis_oracle)
 # vertices on here (32,768 per slab in the library), so that the data shapes
 # test that path and the small random polygons the sequential one.
 target_compile_definitions(test_medial_axis_oracle PRIVATE CGAL_PMA2_EVOLUTION_SLAB_VERTICES=200)
-add_test(NAME oracle_filtered COMMAND test_medial_axis_oracle --only regressions,random,holes,data,touching,union)
+add_test(NAME oracle_filtered COMMAND test_medial_axis_oracle --only regressions,random,holes,data,touching,union,double)
 # Degenerate input (integer grids, Hilbert, Koch, regular polygons, glyphs):
 # every exact tie decided, against the oracle; and finely flattened glyphs,
 # whose default one-shot takes boundary evolution.

@@ -4,7 +4,7 @@
 // axis at every step compared.
 //
 //   test_medial_axis_oracle [--quick] [--only SECTION,...] [--skip SHAPE]
-//       sections: regressions, random, holes, data, degenerate, fine, touching, union
+//       sections: regressions, random, holes, data, degenerate, fine, touching, union, double
 //                           [--traits filtered|epick|exact] [--seed-base N]
 //                           [--driver region|boundary]
 //
@@ -644,6 +644,39 @@ void fine_tests(Checker<Traits>& checker, const Options&)
   std::cout << "fine: " << count << " shapes\n";
 }
 
+// Shapes on which the double model gets decisions wrong without tripping
+// its checks (data/double_model): the one-shot, whichever way it takes (the
+// way out takes exact decisions there), must give the oracle's axis on one
+// and on two threads, never an error.
+template <class Traits>
+void double_model_tests(Checker<Traits>& checker, const Options&)
+{
+  std::size_t count = 0, ways_out = 0;
+  for(const std::string& f : list_wkt(std::string(PMA_TEST_DATA) + "/double_model")) {
+    const Rings rings = pma_tool::read_polygon_file<Point>(f);
+    const std::string what = f.substr(f.find_last_of('/') + 1);
+    for(int threads : {1, 2}) {
+      CGAL::Progressive_medial_axis_statistics stats;
+      auto one_shot = [&] { return CGAL::medial_axis_2(rings, Traits(), CGAL::CHECK_INPUT, &stats); };
+      try {
+        decltype(one_shot()) ma;
+#ifdef CGAL_LINKED_WITH_TBB
+        tbb::task_arena(threads).execute([&] { ma = one_shot(); });
+#else
+        ma = one_shot();
+#endif
+        checker.compare(ma, "one-shot on " + std::to_string(threads) + " thread(s)", true, what, rings);
+        ways_out += stats.region_growing_one_shots;
+      } catch(const std::exception& e) {
+        CHECK(false, what << ": the one-shot on " << threads << " thread(s) threw: " << e.what());
+      }
+    }
+    ++count;
+  }
+  CHECK(count > 0, "no shape in data/double_model");
+  std::cout << "double: " << count << " shapes, " << ways_out << " one-shots computed again by region growing\n";
+}
+
 // A rectangle of w x h unit cells with holes that touch the shell or each other
 // with a vertex inside an edge (T's): in a cell, a triangle whose vertex lies
 // at the middle of the cell's bottom side (on the shell, or on the top edge of
@@ -1202,6 +1235,7 @@ int run_all(const Options& o)
   if(wanted("degenerate")) degenerate_tests(checker, o);
   if(wanted("fine")) fine_tests(checker, o);
   if(wanted("touching")) touching_tests(checker, o);
+  if(wanted("double")) double_model_tests(checker, o);
   if(wanted("union")) union_tests(checker, o);
   // the split triangulation runs where a one-shot has two threads or more,
   // on double coordinates; the random polygons have chords
