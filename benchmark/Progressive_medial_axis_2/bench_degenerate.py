@@ -47,15 +47,21 @@ DATA = os.path.join(ROOT, "benchmark/Progressive_medial_axis_2/data")
 FONTS = "DejaVuSans,DejaVuSerif-Bold,LiberationSerif-Regular,FreeMono,FreeSerif"
 
 
+# The time of a process that exited with an error (None: it ran out of time).
+FAILED = False
+
+
 def run_process(cmd, timeout):
-    """Wall time of one process, or None if it failed or ran out of time."""
+    """Wall time of one process, None if it ran out of time, or FAILED (its
+    error on stderr of this script) if it exited with an error."""
     start = time.perf_counter()
     try:
         p = subprocess.run(cmd, stdout=subprocess.PIPE, stderr=subprocess.PIPE, timeout=timeout, text=True)
     except subprocess.TimeoutExpired:
         return None, ""
     if p.returncode != 0:
-        return None, p.stderr.strip()
+        print("%s: exit status %d: %s" % (" ".join(cmd), p.returncode, p.stderr.strip()[:300]), file=sys.stderr)
+        return FAILED, p.stderr.strip()
     return time.perf_counter() - start, p.stdout
 
 
@@ -63,8 +69,8 @@ def median_process(cmd, runs, timeout):
     times, out = [], ""
     for _ in range(runs):
         t, o = run_process(cmd, timeout)
-        if t is None:
-            return None, o
+        if t is None or t is FAILED:
+            return t, o
         times.append(t)
         out = o
     return statistics.median(times), out
@@ -75,17 +81,18 @@ def median_processes(cmds, runs, timeout):
     each, then the next round), so that a slower or faster spell of the
     machine falls on all of them.  Processes of under 50 ms get at least 21
     rounds: at 5 to 15 ms they move by 20% from run to run.  A command that
-    fails or runs out of time gives None (and is not run again)."""
+    runs out of time gives None, one that fails FAILED (and is not run
+    again)."""
     times = [[] for _ in cmds]
     rounds = runs
     r = 0
     while r < rounds:
         for i, cmd in enumerate(cmds):
-            if times[i] is None:
+            if times[i] is None or times[i] is FAILED:
                 continue
             t, _ = run_process(cmd, timeout)
-            if t is None:
-                times[i] = None
+            if t is None or t is FAILED:
+                times[i] = t
             else:
                 times[i].append(t)
         if r == 0:
@@ -93,7 +100,7 @@ def median_processes(cmds, runs, timeout):
             if firsts and max(firsts) < 0.05:
                 rounds = max(runs, 21)
         r += 1
-    return [statistics.median(ts) if ts else None for ts in times]
+    return [ts if ts is None or ts is FAILED else statistics.median(ts) for ts in times]
 
 
 def stats_of(text):
@@ -117,6 +124,8 @@ def sdg_time(path, runs, timeout):
 
 
 def fmt(t, limit=None):
+    if t is FAILED:
+        return "failed"
     if t is None:
         return "over %g s" % limit if limit else "failed"
     return "%.3g" % t if t >= 0.001 else "%.1e" % t
@@ -199,13 +208,13 @@ def main():
         if a.before:
             # (an older build can take minutes: then once)
             before, _ = median_process([a.before, path], 1, a.timeout)
-            if before is not None and before < 1:
+            if isinstance(before, float) and before < 1:
                 cmds.append([a.before, path])
         times = median_processes(cmds, a.runs, a.timeout)
         ours, epick = times[0], times[1]
         if len(times) > 2:
             before = times[2]
-        sdg = sdg_time(path, max(a.runs, 21) if ours is not None and ours < 0.05 else a.runs, a.timeout)
+        sdg = sdg_time(path, max(a.runs, 21) if isinstance(ours, float) and ours < 0.05 else a.runs, a.timeout)
         stage = lambda k: int(s.get("filter_%s_evaluations" % k, 0)) + int(s.get("filter_%s_comparisons" % k, 0))
         ratio = lambda x, y: "%.2f" % (x / y) if x and y else "-"
         row = "| %s | %s | %s | %s | %s | %s | %s | %s | %s | %d | %d | %d |" % (
