@@ -106,6 +106,23 @@ std::size_t g_split_one_shots = 0;
 std::size_t g_tapered_one_shots = 0;
 int g_default_min_tail_target = 0;
 
+// f() computed in a task arena of `threads` threads (0: where it is called;
+// without oneTBB always there).
+template <class F>
+auto in_arena(int threads, const F& f) -> decltype(f())
+{
+#ifdef CGAL_LINKED_WITH_TBB
+  if(threads > 0) {
+    decltype(f()) r;
+    tbb::task_arena(threads).execute([&] { r = f(); });
+    return r;
+  }
+#else
+  (void)threads;
+#endif
+  return f();
+}
+
 struct Options {
   bool quick = false;
   std::string only;
@@ -381,13 +398,7 @@ bool run_polygon(Checker<Traits>& checker, const Rings& rings, const std::string
         CGAL::Progressive_medial_axes::internal::rings_of<typename Traits::Kernel>(rings), Traits(), CGAL::CHECK_INPUT,
         &stats, parts, probe_limit);
     };
-    decltype(one_shot()) ma;
-#ifdef CGAL_LINKED_WITH_TBB
-    if(one_thread)
-      tbb::task_arena(1).execute([&] { ma = one_shot(); });
-    else
-#endif
-      ma = one_shot();
+    const auto ma = in_arena(one_thread ? 1 : 0, one_shot);
     checker.compare(ma,
                     "one-shot in " + std::to_string(parts) + " parts" + (one_thread ? " on one thread" : "") +
                       (probe_limit ? ", probed " + std::to_string(probe_limit) + " triangles a part" : ""),
@@ -615,12 +626,7 @@ void fine_tests(Checker<Traits>& checker, const Options&)
     const std::string what = f.substr(f.find_last_of('/') + 1);
     CGAL::Progressive_medial_axis_statistics stats;
     auto one_shot = [&] { return CGAL::medial_axis_2(rings, Traits(), CGAL::CHECK_INPUT, &stats); };
-    decltype(one_shot()) ma;
-#ifdef CGAL_LINKED_WITH_TBB
-    tbb::task_arena(2).execute([&] { ma = one_shot(); });
-#else
-    ma = one_shot();
-#endif
+    const auto ma = in_arena(2, one_shot);
     // (exact kernels build one part, and are not probed)
     CHECK(!std::is_floating_point<typename Kernel::FT>::value || stats.boundary_evolution_one_shots == 1,
           what << ": the one-shot took the divide and conquer (" << stats.merges << " merges, "
@@ -659,12 +665,7 @@ void double_model_tests(Checker<Traits>& checker, const Options&)
       CGAL::Progressive_medial_axis_statistics stats;
       auto one_shot = [&] { return CGAL::medial_axis_2(rings, Traits(), CGAL::CHECK_INPUT, &stats); };
       try {
-        decltype(one_shot()) ma;
-#ifdef CGAL_LINKED_WITH_TBB
-        tbb::task_arena(threads).execute([&] { ma = one_shot(); });
-#else
-        ma = one_shot();
-#endif
+        const auto ma = in_arena(threads, one_shot);
         checker.compare(ma, "one-shot on " + std::to_string(threads) + " thread(s)", true, what, rings);
         ways_out += stats.region_growing_one_shots;
       } catch(const std::exception& e) {
