@@ -525,12 +525,12 @@ inline bool one_shot_takes_way_out(std::size_t anomalies)
 /// axis is better than a wrong one.
 ///
 /// With the double model, the anomaly more likely comes from a decision
-/// that the rounding errors got wrong without tripping its checks (on a
-/// grid moved off by 1e-6, where edges are nearly parallel, the axis of a
-/// region-growing step differed from the exact one before any anomaly),
-/// and region growing in doubles met anomalies too: the way out then
-/// takes exact decisions, the double model's fallback (RESULTS.md,
-/// forty-second session).
+/// that the rounding errors got wrong without tripping its checks, and
+/// region growing in doubles would meet it too: the way out takes exact
+/// decisions, the double model's fallback.  (On a grid moved off by 1e-6,
+/// where edges are nearly parallel, the double model's decisions were
+/// wrong before any anomaly until its disks carried error estimates;
+/// RESULTS.md, forty-second and forty-third sessions.)
 template <class Traits>
 void one_shot_by_region_growing(const std::vector<std::vector<typename Traits::Kernel::Point_2> >& rings,
                                 const Traits& traits,

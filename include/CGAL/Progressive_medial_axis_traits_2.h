@@ -316,6 +316,160 @@ bool plausible_circle(const Site_nt<NT> s[3], const Triple_relations& rel, const
   return true;
 }
 
+/// A first-order estimate of the error of a disk constructed in double
+/// precision, for the double model: bounds `dc` on the error of each
+/// coordinate of the centre and `dr` on that of the radius.  They come from
+/// the residuals of the equations that define the disk (tangency to each
+/// site, or a known contact point on the line of a segment), evaluated at
+/// the computed disk, through the inverse of their Jacobian: the
+/// construction's conditioning, which grows without bound where two segment
+/// sites become parallel with their interiors on the same side, or where
+/// the disk touches a segment's line close to a point site.  The fixed
+/// margins alone missed such errors: on a grid moved off its integers by
+/// 1e-6, vanishing times computed in double were off by up to 1e-7 of the
+/// squared length of their separator (a tenth of the time itself), ten
+/// times the margin of a near tie, while every disk passed
+/// plausible_circle() (RESULTS.md, forty-third session).  Infinite where the Jacobian is singular at working
+/// precision.  An estimate, not a proof.
+inline void disk_error_estimate(const Site_nt<double> s[3], const Triple_relations& rel, const Circle_nt<double>& c,
+                                double& dc, double& dr, double* largest_residual = nullptr)
+{
+  using std::fabs;
+  const double inf = std::numeric_limits<double>::infinity();
+  dc = dr = inf;
+  if(largest_residual != nullptr) *largest_residual = inf;
+  if(!(c.r > 0) || !std::isfinite(c.x) || !std::isfinite(c.y) || !std::isfinite(c.r)) return;
+  // the unit direction of each segment site (one square root each: this
+  // runs for every event time of the double model)
+  double ux[3] = {0, 0, 0}, uy[3] = {0, 0, 0};
+  for(int i = 0; i < 3; ++i) {
+    if(s[i].is_point) continue;
+    const double lx = s[i].bx - s[i].ax, ly = s[i].by - s[i].ay, l2 = lx * lx + ly * ly;
+    if(!(l2 > 0)) return;
+    const double inv = 1 / std::sqrt(l2);
+    ux[i] = lx * inv; uy[i] = ly * inv;
+  }
+  const double inv_r = 1 / c.r;
+  // rows (a, b, e) of the Jacobian in (x, y, r), the residual of each, and
+  // the scale of the rounding errors of its evaluation
+  double J[3][3], res[3], scale[3];
+  int n = 0;
+  auto point_row = [&](double px, double py) {
+    // |v| - r as (|v|^2 - r^2) / 2r, and v / r for v / |v|: no square root,
+    // equal to first order
+    const double vx = c.x - px, vy = c.y - py;
+    J[n][0] = vx * inv_r; J[n][1] = vy * inv_r; J[n][2] = -1;
+    res[n] = (vx * vx + vy * vy - c.r * c.r) * (0.5 * inv_r);
+    scale[n++] = fabs(vx) + fabs(vy) + c.r;
+    return true;
+  };
+  auto line_row = [&](int i) {   // tangent to the line of s[i], interior side
+    J[n][0] = -uy[i]; J[n][1] = ux[i]; J[n][2] = -1;
+    res[n] = -uy[i] * (c.x - s[i].ax) + ux[i] * (c.y - s[i].ay) - c.r;
+    scale[n++] = fabs(c.x - s[i].ax) + fabs(c.y - s[i].ay) + c.r;
+    return true;
+  };
+  auto contact_rows = [&](double px, double py, int i) {   // touches the line of s[i] at (px, py)
+    J[n][0] = ux[i]; J[n][1] = uy[i]; J[n][2] = 0;
+    res[n] = ux[i] * (c.x - px) + uy[i] * (c.y - py);
+    scale[n++] = fabs(c.x - px) + fabs(c.y - py);
+    J[n][0] = -uy[i]; J[n][1] = ux[i]; J[n][2] = -1;
+    res[n] = -uy[i] * (c.x - px) + ux[i] * (c.y - py) - c.r;
+    scale[n++] = fabs(c.x - px) + fabs(c.y - py) + c.r;
+    return true;
+  };
+  // Two segments that meet at a corner P (s[i] ends where s[j] starts): a
+  // disk tangent to both lines has its centre on their bisector through P,
+  // the line {c : (u_i + u_j).(c - P) = 0} for their unit directions.  The
+  // difference of their two tangency equations, which it replaces, is
+  // nearly singular where the corner is nearly flat (consecutive segments
+  // of a finely sampled outline), while the constructions find such
+  // centres accurately.  Used where the directions are less than 120
+  // degrees apart (|u_i + u_j| > 1), at most twice (three corners would
+  // drop every tangency).
+  auto generic = [&]() {
+    for(int i = 0; i < 3; ++i) {
+      if(s[i].is_point) point_row(s[i].ax, s[i].ay);
+      else line_row(i);
+    }
+    int replaced = 0;
+    bool done[3] = {false, false, false};
+    for(int i = 0; i < 3 && replaced < 2; ++i)
+      for(int j = 0; j < 3 && replaced < 2; ++j) {
+        if(i == j || done[i] || rel.corner_turn[i][j] == 0) continue;
+        const double bx = ux[i] + ux[j], by = uy[i] + uy[j], b2 = bx * bx + by * by;
+        if(!(b2 > 1)) continue;
+        const double inv = 1 / std::sqrt(b2);
+        J[i][0] = bx * inv; J[i][1] = by * inv; J[i][2] = 0;
+        res[i] = (bx * (c.x - s[i].bx) + by * (c.y - s[i].by)) * inv;
+        scale[i] = fabs(c.x - s[i].bx) + fabs(c.y - s[i].by);
+        done[i] = true;
+        ++replaced;
+      }
+    // So for two point sites: their perpendicular bisector, the difference
+    // of their equations, which is nearly singular for nearly collinear
+    // points far from the centre
+    for(int i = 0; i < 3 && replaced < 2; ++i)
+      for(int j = i + 1; j < 3 && replaced < 2; ++j) {
+        if(done[i] || !s[i].is_point || !s[j].is_point) continue;
+        const double bx = s[j].ax - s[i].ax, by = s[j].ay - s[i].ay, b2 = bx * bx + by * by;
+        if(!(b2 > 0)) continue;
+        const double inv = 1 / std::sqrt(b2);
+        const double mx = c.x - (s[i].ax + bx / 2), my = c.y - (s[i].ay + by / 2);
+        J[i][0] = bx * inv; J[i][1] = by * inv; J[i][2] = 0;
+        res[i] = (bx * mx + by * my) * inv;
+        scale[i] = fabs(mx) + fabs(my) + fabs(bx) + fabs(by);
+        done[i] = true;
+        ++replaced;
+      }
+    return true;
+  };
+  // the same cases as medial_circle_decided()
+  bool rows = false;
+  const int np = int(s[0].is_point) + int(s[1].is_point) + int(s[2].is_point);
+  if(np == 3) rows = generic();
+  else if(np == 2) {
+    const int k = s[0].is_point ? (s[1].is_point ? 2 : 1) : 0, ip = (k + 1) % 3, iq = (k + 2) % 3;
+    if(rel.point_is_target[ip][k]) rows = contact_rows(s[ip].ax, s[ip].ay, k) && point_row(s[iq].ax, s[iq].ay);
+    else if(rel.point_is_source[iq][k]) rows = contact_rows(s[iq].ax, s[iq].ay, k) && point_row(s[ip].ax, s[ip].ay);
+    else rows = generic();
+  } else if(np == 1) {
+    const int ip = s[0].is_point ? 0 : (s[1].is_point ? 1 : 2), i1 = (ip + 1) % 3, i2 = (ip + 2) % 3;
+    if(rel.point_is_source[ip][i1]) rows = contact_rows(s[ip].ax, s[ip].ay, i1) && line_row(i2);
+    else if(rel.point_is_target[ip][i2]) rows = contact_rows(s[ip].ax, s[ip].ay, i2) && line_row(i1);
+    else if(rel.flat_join[i1][i2]) rows = contact_rows(s[i1].bx, s[i1].by, i1) && point_row(s[ip].ax, s[ip].ay);
+    else rows = generic();
+  } else {
+    int joined = -1;
+    for(int i = 0; i < 3 && joined < 0; ++i)
+      if(rel.flat_join[i][(i + 1) % 3]) joined = i;
+    if(joined >= 0) rows = contact_rows(s[joined].bx, s[joined].by, joined) && line_row((joined + 2) % 3);
+    else rows = generic();
+  }
+  if(!rows || n != 3) return;
+  if(largest_residual != nullptr)
+    *largest_residual = (std::max)((std::max)(fabs(res[0]), fabs(res[1])), fabs(res[2]));
+  // the inverse of J by its adjugate
+  double A[3][3];
+  for(int i = 0; i < 3; ++i)
+    for(int j = 0; j < 3; ++j) {
+      const int i1 = (j + 1) % 3, i2 = (j + 2) % 3, j1 = (i + 1) % 3, j2 = (i + 2) % 3;
+      A[i][j] = J[i1][j1] * J[i2][j2] - J[i1][j2] * J[i2][j1];   // cofactor of J[j][i]
+    }
+  const double det = J[0][0] * A[0][0] + J[0][1] * A[1][0] + J[0][2] * A[2][0];
+  if(!(fabs(det) > 1e-300) || !std::isfinite(det)) return;
+  // each residual, plus the rounding errors of its evaluation (of the
+  // differences from the centre as it is stored, a few units in the last
+  // place of them); a factor 4 for the terms of higher order
+  double e[3];
+  for(int j = 0; j < 3; ++j) e[j] = fabs(res[j]) + 8 * 2.220446049250313e-16 * scale[j];
+  double d[3];
+  for(int i = 0; i < 3; ++i) d[i] = 4 * (fabs(A[i][0]) * e[0] + fabs(A[i][1]) * e[1] + fabs(A[i][2]) * e[2]) / fabs(det);
+  dc = (std::max)(d[0], d[1]);
+  dr = d[2];
+  if(!std::isfinite(dc) || !std::isfinite(dr)) dc = dr = inf;
+}
+
 /// TIME_FOOT: the foot on the separator of the point of site s[0].
 /// TIME_CONFLICT: not a time, but a number of the same algebraic kind whose
 /// sign is asked: the squared distance from the centre of the disk tangent to
@@ -362,7 +516,7 @@ Time_kind switch_time_kind(const Site_& line, const Site_& c, const Site_& a, co
 template <class NT, class Site_, class Convert>
 bool evaluate_time(Time_kind kind, const Site_& c, const Site_* s, const Triple_relations& rel,
                    const Convert& cv, NT& t, NT* rad = nullptr, bool* undecided = nullptr,
-                   Circle_nt<NT>* circle_out = nullptr)
+                   Circle_nt<NT>* circle_out = nullptr, bool check_plausible = true)
 {
   auto outcome = [undecided](int found) {
     if(found >= 0 || undecided == nullptr)
@@ -392,8 +546,9 @@ bool evaluate_time(Time_kind kind, const Site_& c, const Site_* s, const Triple_
     return false;
   if constexpr(std::is_floating_point<NT>::value) {
     // a circle built in floating point from nearly degenerate sites can be
-    // far off: the decisions made on it would not be the exact ones
-    if(!plausible_circle(sn, rel, circle))
+    // far off: the decisions made on it would not be the exact ones (the
+    // double model checks it itself, with disk_error_estimate())
+    if(check_plausible && !plausible_circle(sn, rel, circle))
       throw Uncertain_decision();
   }
   if(circle_out != nullptr)
@@ -825,6 +980,7 @@ public:
 /// shared by its copies (one event compared with itself is not a near tie).
 struct Double_time {
   double t = 0, scale = 1;
+  double err = 0;   // an estimate of the error of t (Number_model::time_error())
   std::uint64_t id = 0;
   bool exact = false;   // the start of the separator: 0, exactly
   static std::uint64_t next_id()
@@ -834,8 +990,9 @@ struct Double_time {
   }
 };
 
-/// Two times within this fraction of the squared length of the separator
-/// are a near tie, which the double-precision model does not decide.
+/// Two times within this fraction of the squared length of the separator,
+/// plus their estimated errors (Double_time::err), are a near tie, which
+/// the double-precision model does not decide.
 constexpr double near_tie = 1e-10;
 
 template <class FT>
@@ -873,10 +1030,104 @@ private:
       t.exact = kind == Progressive_medial_axes::internal::TIME_ZERO;
       const FT dx = line.q.x() - line.p.x(), dy = line.q.y() - line.p.y();
       t.scale = dx * dx + dy * dy;
-      return Progressive_medial_axes::internal::evaluate_time<FT>(kind, line, s, rel, Progressive_medial_axes::internal::Identity_convert(), t.t);
+      namespace I = Progressive_medial_axes::internal;
+      t.err = 0;
+      if(kind != I::TIME_SWITCH && kind != I::TIME_VANISH)
+        return I::evaluate_time<FT>(kind, line, s, rel, I::Identity_convert(), t.t);
+      FT rad = 0;
+      I::Circle_nt<FT> circle;
+      circle.r = -std::numeric_limits<FT>::infinity();   // (set once the disk is built)
+      const bool found = I::evaluate_time<FT>(kind, line, s, rel, I::Identity_convert(), t.t, &rad, nullptr, &circle, false);
+      if(circle.r == -std::numeric_limits<FT>::infinity())
+        return found;   // no disk
+      I::Identity_convert cv;
+      const I::Site_nt<FT> sn[3] = {I::site_nt<FT>(s[0], cv), I::site_nt<FT>(s[1], cv), I::site_nt<FT>(s[2], cv)};
+      double dc, dr, residual;
+      I::disk_error_estimate(sn, rel, circle, dc, dr, &residual);
+      // (what plausible_circle() checks: tangent within a relative 1e-9)
+      double scale = std::fabs(circle.x) + std::fabs(circle.y) + circle.r;
+      for(int i = 0; i < 3; ++i)
+        scale = (std::max)(scale, (std::max)((std::max)(std::fabs(sn[i].ax), std::fabs(sn[i].ay)), (std::max)(std::fabs(sn[i].bx), std::fabs(sn[i].by))));
+      if(!(residual <= 1e-9 * scale))
+        throw I::Uncertain_decision();
+      if(kind == I::TIME_VANISH)
+        check_vanishing_decisions(line, sn, rel, circle, dc, dr);
+      if(!found)
+        return false;
+      t.err = time_error(line, circle, dc, dr, t.t, rad, kind == I::TIME_VANISH);
+      t.t += std::sqrt(rad);
+      return true;
     } else {
       return Progressive_medial_axes::internal::evaluate_time<FT>(kind, line, s, rel, Progressive_medial_axes::internal::Identity_convert(), t);
     }
+  }
+
+  // An estimate of the error of a switch or vanishing time computed in
+  // double, `alpha + sqrt(rad)` (rad is 0 for a switch time), from the
+  // error estimate (dc, dr) of its disk (disk_error_estimate()).
+  static double time_error(const Site_2& line, const Progressive_medial_axes::internal::Circle_nt<FT>& circle, double dc, double dr,
+                           double alpha, double rad, bool vanish)
+  {
+    const double u = 2.220446049250313e-16;
+    const double dx = line.q.x() - line.p.x(), dy = line.q.y() - line.p.y();
+    const double vx = circle.x - line.p.x(), vy = circle.y - line.p.y();
+    const double d1 = std::fabs(dx) + std::fabs(dy), d2 = dx * dx + dy * dy;
+    // alpha = d.v, and rad = r^2 |d|^2 - (d x v)^2
+    double err = d1 * dc + 4 * u * (std::fabs(alpha) + d1 * (std::fabs(vx) + std::fabs(vy)));
+    if(vanish) {
+      const double h = std::fabs(dx * vy - dy * vx);
+      const double drad = 2 * circle.r * d2 * dr + 2 * h * d1 * dc + 8 * u * (circle.r * circle.r * d2 + h * h);
+      // |sqrt(a) - sqrt(b)| <= min(sqrt|a - b|, |a - b| / sqrt(a))
+      err += drad / std::sqrt((std::max)(rad, drad));
+    }
+    return std::isfinite(err) ? err : std::numeric_limits<double>::infinity();
+  }
+
+  // The decisions of a vanishing time in double (evaluate_time()) that its
+  // disk's error (dc, dr) can flip: does the disk touch each segment site
+  // within the segment, does it meet the separator's line.  Throws
+  // Uncertain_decision (the merge is redone with exact decisions) where
+  // one is within the error.  On a grid moved off its integers by 1e-6, a
+  // disk tangent to two consecutive nearly collinear segments was 2e-7 off,
+  // its contact a hair beyond the corner between them, and the double model
+  // dropped a vanishing event the exact one kept (RESULTS.md, forty-third
+  // session).
+  static void check_vanishing_decisions(const Site_2& line, const Progressive_medial_axes::internal::Site_nt<FT> sn[3],
+                                        const Progressive_medial_axes::internal::Triple_relations& rel,
+                                        const Progressive_medial_axes::internal::Circle_nt<FT>& c, double dc, double dr)
+  {
+    namespace I = Progressive_medial_axes::internal;
+    const double u = 2.220446049250313e-16;
+    // (the tolerances of touches_segments() and chord_far_end_parts() in double)
+    const double contact_tolerance = 1e-12, miss_tolerance = 1e-12;
+    bool uncertain = false;
+    for(int i = 0; i < 3; ++i) {
+      if(sn[i].is_point) continue;
+      bool known = false;
+      for(int j = 0; j < 3; ++j)
+        if(j != i && (rel.point_is_source[j][i] || rel.point_is_target[j][i] || rel.flat_join[i][j] || rel.flat_join[j][i]))
+          known = true;
+      if(known) continue;
+      const double dx = sn[i].bx - sn[i].ax, dy = sn[i].by - sn[i].ay, d1 = std::fabs(dx) + std::fabs(dy);
+      const double low = -contact_tolerance * (dx * dx + dy * dy);
+      const double before = (c.x - sn[i].ax) * dx + (c.y - sn[i].ay) * dy, beyond = (sn[i].bx - c.x) * dx + (sn[i].by - c.y) * dy;
+      const double margin = d1 * dc + 4 * u * d1 * (std::fabs(c.x - sn[i].ax) + std::fabs(c.y - sn[i].ay) + d1);
+      if(before < low - margin || beyond < low - margin)
+        return;   // misses the segment, certainly: no event
+      if(!(std::fabs(before - low) > margin) || !(std::fabs(beyond - low) > margin))
+        uncertain = true;
+    }
+    if(uncertain)
+      throw I::Uncertain_decision();
+    if(rel.separator_on_line)
+      return;
+    const double dx = line.q.x() - line.p.x(), dy = line.q.y() - line.p.y();
+    const double vx = c.x - line.p.x(), vy = c.y - line.p.y();
+    const double d1 = std::fabs(dx) + std::fabs(dy), d2 = dx * dx + dy * dy;
+    const double h = dx * vy - dy * vx, r2d2 = c.r * c.r * d2;
+    const double drad = 2 * c.r * d2 * dr + 2 * std::fabs(h) * d1 * dc + 8 * u * (r2d2 + h * h);
+    if(!(std::fabs(r2d2 - h * h + miss_tolerance * r2d2) > drad))
+      throw I::Uncertain_decision();
   }
 
   static Event_time_2 foot_time(const Site_2& line, const Point_2& p)
@@ -887,13 +1138,14 @@ private:
     return t;
   }
 
-  // In double precision a near tie is not decided (Uncertain_decision): the
-  // merge is redone with exact decisions.
+  // In double precision a near tie (closer than the two estimated errors
+  // plus near_tie) is not decided (Uncertain_decision): the merge is redone
+  // with exact decisions.
   static Comparison_result compare_times(const Event_time_2& a, const Event_time_2& b)
   {
     if constexpr(Floating) {
       if(a.id == b.id || (a.exact && b.exact)) return EQUAL;
-      if(std::fabs(a.t - b.t) <= near_tie * (std::max)(a.scale, b.scale)) throw Uncertain_decision();
+      if(std::fabs(a.t - b.t) <= a.err + b.err + near_tie * (std::max)(a.scale, b.scale)) throw Uncertain_decision();
       return a.t < b.t ? SMALLER : LARGER;
     } else {
       return CGAL::compare(a, b);
@@ -919,6 +1171,14 @@ private:
       try {
         built = Progressive_medial_axes::internal::medial_circle(sn, rel, circle) &&
                 Progressive_medial_axes::internal::plausible_circle(sn, rel, circle, true);
+        if(built) {
+          // tangent is not enough where the construction is ill-conditioned
+          // (disk_error_estimate()): its error must be as small too
+          double dc, dr;
+          Progressive_medial_axes::internal::disk_error_estimate(sn, rel, circle, dc, dr);
+          const FT tolerance = FT(1e-9) * circle.r + FT(32 * 2.220446049250313e-16) * (std::fabs(circle.x) + std::fabs(circle.y) + circle.r);
+          built = dc <= tolerance && dr <= tolerance;
+        }
       } catch(Progressive_medial_axes::internal::Uncertain_decision&) {
       }
       if(!built)
