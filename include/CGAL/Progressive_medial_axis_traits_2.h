@@ -276,6 +276,18 @@ Site_nt<NT> site_nt(const Site_& s, const Convert& cv)
   return r;
 }
 
+/// The scale of the coordinates of a disk and its sites, which the
+/// tangency tolerance of plausible_circle() is relative to.
+template <class NT>
+NT plausible_scale(const Site_nt<NT> s[3], const Circle_nt<NT>& c)
+{
+  using std::fabs;
+  NT scale = fabs(c.x) + fabs(c.y) + fabs(c.r);
+  for(int i = 0; i < 3; ++i)
+    scale = (std::max)(scale, (std::max)((std::max)(fabs(s[i].ax), fabs(s[i].ay)), (std::max)(fabs(s[i].bx), fabs(s[i].by))));
+  return scale;
+}
+
 /// Whether a circle computed in double is tangent to its three sites, up to
 /// a relative 1e-9 of the coordinates involved: a check against the wild
 /// results of ill-conditioned constructions, not a proof.  With `vertex`,
@@ -286,10 +298,8 @@ template <class NT>
 bool plausible_circle(const Site_nt<NT> s[3], const Triple_relations& rel, const Circle_nt<NT>& c, bool vertex = false)
 {
   using std::fabs;
-  NT scale = fabs(c.x) + fabs(c.y) + fabs(c.r);
-  const NT centre_scale = scale;
-  for(int i = 0; i < 3; ++i)
-    scale = (std::max)(scale, (std::max)((std::max)(fabs(s[i].ax), fabs(s[i].ay)), (std::max)(fabs(s[i].bx), fabs(s[i].by))));
+  const NT centre_scale = fabs(c.x) + fabs(c.y) + fabs(c.r);
+  const NT scale = plausible_scale(s, c);
   const NT tolerance = vertex ? NT(1e-9) * fabs(c.r) + NT(32 * 2.220446049250313e-16) * centre_scale : NT(1e-9) * scale;
   if(!(c.r >= 0) || !std::isfinite(c.x) || !std::isfinite(c.y)) return false;
   for(int i = 0; i < 3; ++i) {
@@ -1045,16 +1055,14 @@ private:
       double dc, dr, residual;
       I::disk_error_estimate(sn, rel, circle, dc, dr, &residual);
       // (what plausible_circle() checks: tangent within a relative 1e-9)
-      double scale = std::fabs(circle.x) + std::fabs(circle.y) + circle.r;
-      for(int i = 0; i < 3; ++i)
-        scale = (std::max)(scale, (std::max)((std::max)(std::fabs(sn[i].ax), std::fabs(sn[i].ay)), (std::max)(std::fabs(sn[i].bx), std::fabs(sn[i].by))));
-      if(!(residual <= 1e-9 * scale))
+      if(!(residual <= 1e-9 * I::plausible_scale(sn, circle)))
         throw I::Uncertain_decision();
+      const Chord_error chord(line, circle, dc, dr);
       if(kind == I::TIME_VANISH)
-        check_vanishing_decisions(line, sn, rel, circle, dc, dr);
+        check_vanishing_decisions(sn, rel, circle, dc, chord);
       if(!found)
         return false;
-      t.err = time_error(line, circle, dc, dr, t.t, rad, kind == I::TIME_VANISH);
+      t.err = time_error(chord, dc, t.t, rad, kind == I::TIME_VANISH);
       t.t += std::sqrt(rad);
       return true;
     } else {
@@ -1062,39 +1070,50 @@ private:
     }
   }
 
+  // The separator (P to Q) of a time against its disk, and the estimated
+  // error of the radicand r^2 |d|^2 - (d x v)^2 of its chord (d = Q - P,
+  // v = centre - P), from the disk's error estimate (dc, dr): what
+  // time_error() and check_vanishing_decisions() both need.
+  struct Chord_error {
+    double vx, vy, d1, d2, h, r2d2, drad;
+    Chord_error(const Site_2& line, const Progressive_medial_axes::internal::Circle_nt<FT>& c, double dc, double dr)
+    {
+      const double u = 2.220446049250313e-16;
+      const double dx = line.q.x() - line.p.x(), dy = line.q.y() - line.p.y();
+      vx = c.x - line.p.x(); vy = c.y - line.p.y();
+      d1 = std::fabs(dx) + std::fabs(dy); d2 = dx * dx + dy * dy;
+      h = dx * vy - dy * vx; r2d2 = c.r * c.r * d2;
+      drad = 2 * c.r * d2 * dr + 2 * std::fabs(h) * d1 * dc + 8 * u * (r2d2 + h * h);
+    }
+  };
+
   // An estimate of the error of a switch or vanishing time computed in
   // double, `alpha + sqrt(rad)` (rad is 0 for a switch time), from the
-  // error estimate (dc, dr) of its disk (disk_error_estimate()).
-  static double time_error(const Site_2& line, const Progressive_medial_axes::internal::Circle_nt<FT>& circle, double dc, double dr,
-                           double alpha, double rad, bool vanish)
+  // error estimate dc of its disk's centre and that of its chord.
+  static double time_error(const Chord_error& chord, double dc, double alpha, double rad, bool vanish)
   {
     const double u = 2.220446049250313e-16;
-    const double dx = line.q.x() - line.p.x(), dy = line.q.y() - line.p.y();
-    const double vx = circle.x - line.p.x(), vy = circle.y - line.p.y();
-    const double d1 = std::fabs(dx) + std::fabs(dy), d2 = dx * dx + dy * dy;
-    // alpha = d.v, and rad = r^2 |d|^2 - (d x v)^2
-    double err = d1 * dc + 4 * u * (std::fabs(alpha) + d1 * (std::fabs(vx) + std::fabs(vy)));
-    if(vanish) {
-      const double h = std::fabs(dx * vy - dy * vx);
-      const double drad = 2 * circle.r * d2 * dr + 2 * h * d1 * dc + 8 * u * (circle.r * circle.r * d2 + h * h);
-      // |sqrt(a) - sqrt(b)| <= min(sqrt|a - b|, |a - b| / sqrt(a))
-      err += drad / std::sqrt((std::max)(rad, drad));
-    }
+    // alpha = d.v
+    double err = chord.d1 * dc + 4 * u * (std::fabs(alpha) + chord.d1 * (std::fabs(chord.vx) + std::fabs(chord.vy)));
+    // |sqrt(a) - sqrt(b)| <= min(sqrt|a - b|, |a - b| / sqrt(a))
+    if(vanish)
+      err += chord.drad / std::sqrt((std::max)(rad, chord.drad));
     return std::isfinite(err) ? err : std::numeric_limits<double>::infinity();
   }
 
   // The decisions of a vanishing time in double (evaluate_time()) that its
-  // disk's error (dc, dr) can flip: does the disk touch each segment site
-  // within the segment, does it meet the separator's line.  Throws
+  // disk's error can flip: does the disk touch each segment site within
+  // the segment, does it meet the separator's line.  Throws
   // Uncertain_decision (the merge is redone with exact decisions) where
   // one is within the error.  On a grid moved off its integers by 1e-6, a
   // disk tangent to two consecutive nearly collinear segments was 2e-7 off,
   // its contact a hair beyond the corner between them, and the double model
   // dropped a vanishing event the exact one kept (RESULTS.md, forty-third
   // session).
-  static void check_vanishing_decisions(const Site_2& line, const Progressive_medial_axes::internal::Site_nt<FT> sn[3],
+  static void check_vanishing_decisions(const Progressive_medial_axes::internal::Site_nt<FT> sn[3],
                                         const Progressive_medial_axes::internal::Triple_relations& rel,
-                                        const Progressive_medial_axes::internal::Circle_nt<FT>& c, double dc, double dr)
+                                        const Progressive_medial_axes::internal::Circle_nt<FT>& c, double dc,
+                                        const Chord_error& chord)
   {
     namespace I = Progressive_medial_axes::internal;
     const double u = 2.220446049250313e-16;
@@ -1102,12 +1121,7 @@ private:
     const double contact_tolerance = 1e-12, miss_tolerance = 1e-12;
     bool uncertain = false;
     for(int i = 0; i < 3; ++i) {
-      if(sn[i].is_point) continue;
-      bool known = false;
-      for(int j = 0; j < 3; ++j)
-        if(j != i && (rel.point_is_source[j][i] || rel.point_is_target[j][i] || rel.flat_join[i][j] || rel.flat_join[j][i]))
-          known = true;
-      if(known) continue;
+      if(sn[i].is_point || I::segment_contact_known(rel, i)) continue;
       const double dx = sn[i].bx - sn[i].ax, dy = sn[i].by - sn[i].ay, d1 = std::fabs(dx) + std::fabs(dy);
       const double low = -contact_tolerance * (dx * dx + dy * dy);
       const double before = (c.x - sn[i].ax) * dx + (c.y - sn[i].ay) * dy, beyond = (sn[i].bx - c.x) * dx + (sn[i].by - c.y) * dy;
@@ -1121,12 +1135,7 @@ private:
       throw I::Uncertain_decision();
     if(rel.separator_on_line)
       return;
-    const double dx = line.q.x() - line.p.x(), dy = line.q.y() - line.p.y();
-    const double vx = c.x - line.p.x(), vy = c.y - line.p.y();
-    const double d1 = std::fabs(dx) + std::fabs(dy), d2 = dx * dx + dy * dy;
-    const double h = dx * vy - dy * vx, r2d2 = c.r * c.r * d2;
-    const double drad = 2 * c.r * d2 * dr + 2 * std::fabs(h) * d1 * dc + 8 * u * (r2d2 + h * h);
-    if(!(std::fabs(r2d2 - h * h + miss_tolerance * r2d2) > drad))
+    if(!(std::fabs(chord.r2d2 - chord.h * chord.h + miss_tolerance * chord.r2d2) > chord.drad))
       throw I::Uncertain_decision();
   }
 

@@ -751,6 +751,18 @@ bool medial_circle(const Site_nt<NT> s[3], const Triple_relations& rel, Circle_n
   return certain_or_throw(medial_circle_decided(s, rel, c), "medial_circle: undecided comparison");
 }
 
+/// Whether the contact of a disk of the triple with its segment site `i` is
+/// known to be one of the segment's endpoints (a point site at that
+/// endpoint, a flat join with another segment of the triple): such a
+/// contact is not tested.
+inline bool segment_contact_known(const Triple_relations& rel, int i)
+{
+  for(int j = 0; j < 3; ++j)
+    if(j != i && (rel.point_is_source[j][i] || rel.point_is_target[j][i] || rel.flat_join[i][j] || rel.flat_join[j][i]))
+      return true;
+  return false;
+}
+
 /// Whether the disk touches every segment site of the triple within the
 /// closed segment (not only its supporting line): 1 if it does, 0 if not,
 /// -1 if the number type cannot decide it (see `decided()`).  A segment
@@ -762,13 +774,7 @@ int touches_segments(const Site_nt<NT> s[3], const Triple_relations& rel, const 
                      double tolerance)
 {
   for(int i = 0; i < 3; ++i) {
-    if(s[i].is_point) continue;
-    bool known = false;
-    for(int j = 0; j < 3; ++j)
-      if(j != i && (rel.point_is_source[j][i] || rel.point_is_target[j][i] ||
-                    rel.flat_join[i][j] || rel.flat_join[j][i]))
-        known = true;
-    if(known) continue;
+    if(s[i].is_point || segment_contact_known(rel, i)) continue;
     // At a corner shared with another segment of the triple, a disk of
     // positive radius tangent to both lines on their interior sides touches
     // them at the distance r cot(alpha / 2) from the corner, alpha the
