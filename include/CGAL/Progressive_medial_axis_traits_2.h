@@ -1048,8 +1048,12 @@ private:
       I::Circle_nt<FT> circle;
       circle.r = -std::numeric_limits<FT>::infinity();   // (set once the disk is built)
       const bool found = I::evaluate_time<FT>(kind, line, s, rel, I::Identity_convert(), t.t, &rad, nullptr, &circle, false);
-      if(circle.r == -std::numeric_limits<FT>::infinity())
-        return found;   // no disk
+      if(circle.r == -std::numeric_limits<FT>::infinity()) {
+        // no disk: a decision of signs that rounding errors can flip
+        if(!found && !no_disk_certain(s, rel))
+          throw I::Uncertain_decision();
+        return found;
+      }
       I::Identity_convert cv;
       const I::Site_nt<FT> sn[3] = {I::site_nt<FT>(s[0], cv), I::site_nt<FT>(s[1], cv), I::site_nt<FT>(s[2], cv)};
       double dc, dr, residual;
@@ -1068,6 +1072,40 @@ private:
     } else {
       return Progressive_medial_axes::internal::evaluate_time<FT>(kind, line, s, rel, Progressive_medial_axes::internal::Identity_convert(), t);
     }
+  }
+
+  // Whether the three sites certainly have no medial disk, where the double
+  // construction found none.  It decides that on signs that its rounding
+  // errors can flip: with a point 2e-17 from the line of a segment, a disk
+  // of radius 4e-17 tangent to that line and to the point's segment came
+  // out with a negative radius, and a merge went on without its vanishing
+  // event (fuzz_engine; test data double_model/point_near_line_2e-17, RESULTS.md,
+  // forty-fourth session).  So the same construction is evaluated in
+  // interval arithmetic, which certifies its signs or leaves them
+  // undecided; only the merges that meet such a case pay for it.
+  static bool no_disk_certain(const Site_2* s, const Progressive_medial_axes::internal::Triple_relations& rel)
+  {
+    namespace I = Progressive_medial_axes::internal;
+    typedef Interval_nt<false> Interval;
+    I::Upward_rounding protection;
+    const I::To_nt_convert<Interval> cv;
+    const I::Site_nt<Interval> sn[3] = {I::site_nt<Interval>(s[0], cv), I::site_nt<Interval>(s[1], cv),
+                                         I::site_nt<Interval>(s[2], cv)};
+    I::Circle_nt<Interval> c;
+    // (as the filtered model's interval stage: where the intervals leave a
+    // branch undecided, again with the relations of exact ties)
+    I::Triple_relations r = rel;
+    for(int attempt = 0; attempt < 2; ++attempt) {
+      if(attempt == 1 && !I::refine_relations<K>(s, static_cast<const Site_2*>(nullptr), r))
+        break;
+      try {
+        const int disk = I::medial_circle_decided(sn, r, c);
+        if(disk >= 0)
+          return disk == 0;
+      } catch(Uncertain_conversion_exception&) {
+      }
+    }
+    return false;
   }
 
   // The separator (P to Q) of a time against its disk, and the estimated
@@ -1209,7 +1247,9 @@ private:
   }
 
   // In double precision a value within a relative 1e-9 of zero (a tangency,
-  // or near one) is not decided: the cut is redone with exact decisions.
+  // or near one), or within the error its disk's estimate
+  // (disk_error_estimate()) carries into it, is not decided: the cut is
+  // redone with exact decisions.
   static bool conflict(const Site_2& segment, const Site_2* s)
   {
     namespace I = Progressive_medial_axes::internal;
@@ -1224,7 +1264,13 @@ private:
       // the centre is off by a few units in the last place of its
       // coordinates: dist^2 by about 2 r times that
       const FT centre_error = FT(64 * 2.220446049250313e-16) * (std::fabs(c.x) + std::fabs(c.y) + c.r);
-      if(!(std::fabs(v) > FT(1e-9) * (c.r * c.r + std::fabs(v)) + FT(2) * c.r * centre_error))
+      // v = dist^2 - r^2: a centre off by dc in each coordinate moves dist
+      // by at most 2 dc, a radius off by dr moves r by dr
+      double dc, dr;
+      I::disk_error_estimate(sn, rel, c, dc, dr);
+      const FT dist = std::sqrt((std::max)(v + c.r * c.r, FT(0)));
+      const FT disk_error = FT(4) * dist * dc + FT(2) * c.r * dr + FT(4) * dc * dc + dr * dr;
+      if(!(std::fabs(v) > FT(1e-9) * (c.r * c.r + std::fabs(v)) + FT(2) * c.r * centre_error + disk_error))
         throw I::Uncertain_decision();
       return v < 0;
     } else {

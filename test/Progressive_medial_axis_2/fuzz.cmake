@@ -20,14 +20,24 @@ if(PMA_FUZZ_TESTS AND PMA_CLANGXX)
   endif()
   foreach(fuzzer fuzz_readers fuzz_engine)
     set(src ${CMAKE_CURRENT_SOURCE_DIR}/fuzz/${fuzzer}.cpp)
+    # the headers the fuzzer includes, from clang's own dependency file
+    # (IMPLICIT_DEPENDS does not see the -I directories of the command, so
+    # a change of the library did not rebuild the fuzzers)
+    if(CMAKE_VERSION VERSION_GREATER_EQUAL 3.20)
+      set(pma_fuzz_depends -MD -MF ${CMAKE_CURRENT_BINARY_DIR}/${fuzzer}.d)
+      set(pma_fuzz_depfile DEPFILE ${CMAKE_CURRENT_BINARY_DIR}/${fuzzer}.d)
+    else()
+      set(pma_fuzz_depends)
+      set(pma_fuzz_depfile IMPLICIT_DEPENDS CXX ${src})
+    endif()
     add_custom_command(
       OUTPUT ${CMAKE_CURRENT_BINARY_DIR}/${fuzzer}
       COMMAND ${PMA_CLANGXX} -std=c++17 -g -O1 -fsanitize=fuzzer,address,undefined -fno-sanitize-recover=undefined
               -DCGAL_PMA2_NO_TBB ${pma_fuzz_simdjson_flags} -I${PROJECT_SOURCE_DIR}/include
               -I${PROJECT_SOURCE_DIR}/tool/Progressive_medial_axis_2/include -I${CMAKE_CURRENT_SOURCE_DIR}/include
-              ${src} -o ${CMAKE_CURRENT_BINARY_DIR}/${fuzzer} -lgmp -lmpfr ${pma_fuzz_simdjson_libs}
+              ${pma_fuzz_depends} ${src} -o ${CMAKE_CURRENT_BINARY_DIR}/${fuzzer} -lgmp -lmpfr ${pma_fuzz_simdjson_libs}
       DEPENDS ${src}
-      IMPLICIT_DEPENDS CXX ${src}
+      ${pma_fuzz_depfile}
       COMMENT "Building the fuzzer ${fuzzer} with clang")
     add_custom_target(${fuzzer}_build ALL DEPENDS ${CMAKE_CURRENT_BINARY_DIR}/${fuzzer})
   endforeach()

@@ -656,7 +656,10 @@ void fine_tests(Checker<Traits>& checker, const Options&)
 // and on two threads, never an error; and so must every step of region
 // growing, and the one-shots of run_polygon(), without an anomaly (before
 // the double model estimated the errors of its disks, steps 28 to 30 of 33
-// of grid_perturbed_crop37 differed from the oracle without a warning).
+// of grid_perturbed_crop37 differed from the oracle without a warning;
+// before its output tested folds with exact predicates, fold_2e-17 lost a
+// curve in every run; before it checked its "no disk" decisions in
+// intervals, point_near_line_2e-17 had a branch point outside the polygon).
 template <class Traits>
 void double_model_tests(Checker<Traits>& checker, const Options&)
 {

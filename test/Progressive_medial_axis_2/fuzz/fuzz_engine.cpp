@@ -11,6 +11,10 @@
 // their two axes (medial_axis_union_2) must have the curves of the whole
 // (generators compared by their points: the union numbers its polygon its
 // own way), or report an input error (the segment leaves the polygon).
+// The double model (traits over Simple_cartesian<double>) must give the
+// same curves in one shot and by boundary evolution, up to curves shorter
+// than 1e-9 of the coordinates, unless it reports the events it forced
+// (statistics' anomalies): it may be wrong only where it says so.
 // Built with AddressSanitizer and UBSan; any crash or difference is a failure.
 //
 //   fuzz_engine [libFuzzer options] [CORPUS_DIR ...]
@@ -22,6 +26,7 @@
 #include <CGAL/Progressive_medial_axis_2/medial_axis_union_2.h>
 #include <CGAL/Progressive_medial_axis_2/validate_polygon.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Simple_cartesian.h>
 
 #include <algorithm>
 #include <cmath>
@@ -83,6 +88,17 @@ bool same_curves(const Curves& a, const Curves& b, double scale)
   return same;
 }
 
+// The curves longer than `tiny`: where the double model's decisions and
+// the exact ones part on a curve shorter than its rounding errors, both
+// are right to that precision.
+Curves without_tiny(const Curves& a, double tiny)
+{
+  Curves out;
+  for(const auto& c : a)
+    if(std::get<2>(c) > tiny) out.push_back(c);
+  return out;
+}
+
 void print_difference(const char* what, const Curves& a, const Curves& b)
 {
   std::fprintf(stderr, "%s differ: %zu and %zu curves\n", what, a.size(), b.size());
@@ -135,6 +151,29 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   if(!same_curves(a, e, scale)) {
     print_difference("one-shot and boundary evolution", a, e);
     __builtin_trap();
+  }
+  // the double model, in one shot and by boundary evolution
+  {
+    typedef CGAL::Progressive_medial_axis_traits_2<CGAL::Simple_cartesian<double> > Double_traits;
+    typedef Double_traits::Kernel::Point_2 Double_point;
+    std::vector<std::vector<Double_point> > double_rings;
+    for(const auto& r : rings) {
+      double_rings.emplace_back();
+      for(const auto& p : r) double_rings.back().emplace_back(p.x(), p.y());
+    }
+    const Curves exact = without_tiny(a, 1e-9 * scale);
+    const Curves d = without_tiny(curves(CGAL::medial_axis_2(double_rings, Double_traits())), 1e-9 * scale);
+    if(!same_curves(exact, d, scale)) {
+      print_difference("one-shot and the double model's one-shot", exact, d);
+      __builtin_trap();
+    }
+    CGAL::Progressive_medial_axis_2<Double_traits> double_evolved(double_rings, CGAL::BOUNDARY_EVOLUTION);
+    while(double_evolved.refine()) {}
+    const Curves de = without_tiny(curves(double_evolved.medial_axis()), 1e-9 * scale);
+    if(double_evolved.statistics().anomalies == 0 && !same_curves(exact, de, scale)) {
+      print_difference("one-shot and the double model's boundary evolution", exact, de);
+      __builtin_trap();
+    }
   }
   // the union of two parts along the segment from vertex 0 to vertex k
   const std::size_t n = rings[0].size();
