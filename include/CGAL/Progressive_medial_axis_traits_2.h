@@ -138,18 +138,6 @@ struct Oriented_line_hook<Small_one_root> {
   }
 };
 
-/// The orientation predicate of kernel K, exact: for a kernel of doubles
-/// (Simple_cartesian<double>), that of Epick on the same points.
-template <class K>
-struct Exact_orientation {
-  typedef Exact_predicates_kernel_for<K> EK;
-  Orientation operator()(const typename K::Point_2& a, const typename K::Point_2& b,
-                         const typename K::Point_2& c) const
-  {
-    return typename EK::type().orientation_2_object()(EK::point(a), EK::point(b), EK::point(c));
-  }
-};
-
 /// Whether the segments u and v lie on one line (exact predicates of `K`).
 template <class K, class Site_>
 bool on_one_line(const Site_& u, const Site_& v)

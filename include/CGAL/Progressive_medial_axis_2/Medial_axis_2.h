@@ -880,9 +880,7 @@ private:
   // dropped the curve along it; data/double_model/fold_2e-17 of the tests)
   static bool collinear(const Data* d, int a, int b, int c)
   {
-    typedef Progressive_medial_axes::internal::Exact_predicates_kernel_for<K> EK;
-    return typename EK::type().orientation_2_object()(EK::point(d->points[a]), EK::point(d->points[b]),
-                                                      EK::point(d->points[c])) == COLLINEAR;
+    return Progressive_medial_axes::internal::Exact_orientation<K>()(d->points[a], d->points[b], d->points[c]) == COLLINEAR;
   }
 
   static bool is_medial(const Data* d, int h)

@@ -840,7 +840,7 @@ private:
 
   Orientation orientation(const Point_2& a, const Point_2& b, const Point_2& c) const
   {
-    return typename EK::type().orientation_2_object()(EK::point(a), EK::point(b), EK::point(c));
+    return Exact_orientation<Kernel>()(a, b, c);
   }
   // the same on vertices (for a kernel of doubles, from the copies of their
   // coordinates, without reading the input's points)

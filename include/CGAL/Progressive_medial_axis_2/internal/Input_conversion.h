@@ -57,6 +57,18 @@ struct Exact_predicates_kernel_for<K, true> {
   static type::Point_2 point(const typename K::Point_2& p) { return type::Point_2(p.x(), p.y()); }
 };
 
+/// The orientation predicate of kernel K, exact: for a kernel of doubles
+/// (Simple_cartesian<double>), that of Epick on the same points.
+template <class K>
+struct Exact_orientation {
+  typedef Exact_predicates_kernel_for<K> EK;
+  Orientation operator()(const typename K::Point_2& a, const typename K::Point_2& b,
+                         const typename K::Point_2& c) const
+  {
+    return typename EK::type().orientation_2_object()(EK::point(a), EK::point(b), EK::point(c));
+  }
+};
+
 // Whether P is the point type of a CGAL kernel.
 template <class P, class = void>
 struct Is_kernel_point : std::false_type {};
