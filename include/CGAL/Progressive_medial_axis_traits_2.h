@@ -252,6 +252,31 @@ bool refine_relations(const Site_ s[3], const Site_* separator, Triple_relations
   return found;
 }
 
+/// Decides in double intervals: `stage(rel)` returns 0 or 1 where it
+/// decides, -1 (or throws Uncertain_conversion_exception) where a branch
+/// stays undecided; it is then run again, once, with the relations of exact
+/// ties that refine_relations() adds to `rel` for the triple `s` (none
+/// without sites) and `separator`.  Returns the stage's answer, or -1.
+/// Each run is in upward rounding.  The interval stage of the filtered
+/// model and the double model's check of "no disk" decide so.
+template <class K, class Site_, class Stage>
+CGAL_PMA2_ALWAYS_INLINE int decide_in_intervals(const Site_* s, const Site_* separator, Triple_relations& rel,
+                                                const Stage& stage)
+{
+  for(int attempt = 0; attempt < 2; ++attempt) {
+    if(attempt == 1 && (s == nullptr || !refine_relations<K>(s, separator, rel)))
+      break;
+    Upward_rounding protection;
+    try {
+      const int r = stage(static_cast<const Triple_relations&>(rel));
+      if(r >= 0)
+        return r;
+    } catch(Uncertain_conversion_exception&) {
+    }
+  }
+  return -1;
+}
+
 template <class NT, class Site_, class Convert>
 Site_nt<NT> site_nt(const Site_& s, const Convert& cv)
 {
@@ -560,7 +585,7 @@ bool evaluate_time(Time_kind kind, const Site_& c, const Site_* s, const Triple_
     return true;
   }
   // a vanishing point needs a disk that touches the segments themselves
-  const double tolerance = std::is_floating_point<NT>::value ? 1e-12 : 0.0;
+  const double tolerance = std::is_floating_point<NT>::value ? floating_contact_tolerance : 0.0;
   if(!outcome(touches_segments(sn, rel, circle, tolerance)))
     return false;
   if(rad != nullptr)
@@ -1075,7 +1100,9 @@ private:
   {
     namespace I = Progressive_medial_axes::internal;
     typedef Interval_nt<false> Interval;
-    I::Upward_rounding protection;
+    // (double coordinates convert to intervals exactly; decide_in_intervals()
+    // rounds upward for the construction only, not for the exact predicates
+    // of refine_relations(), whose static filters assume rounding to nearest)
     const I::To_nt_convert<Interval> cv;
     const I::Site_nt<Interval> sn[3] = {I::site_nt<Interval>(s[0], cv), I::site_nt<Interval>(s[1], cv),
                                          I::site_nt<Interval>(s[2], cv)};
@@ -1083,17 +1110,10 @@ private:
     // (as the filtered model's interval stage: where the intervals leave a
     // branch undecided, again with the relations of exact ties)
     I::Triple_relations r = rel;
-    for(int attempt = 0; attempt < 2; ++attempt) {
-      if(attempt == 1 && !I::refine_relations<K>(s, static_cast<const Site_2*>(nullptr), r))
-        break;
-      try {
-        const int disk = I::medial_circle_decided(sn, r, c);
-        if(disk >= 0)
-          return disk == 0;
-      } catch(Uncertain_conversion_exception&) {
-      }
-    }
-    return false;
+    return I::decide_in_intervals<K>(s, static_cast<const Site_2*>(nullptr), r, [&](const I::Triple_relations& x) {
+             const int disk = I::medial_circle_decided(sn, x, c);
+             return disk < 0 ? -1 : int(disk == 0);
+           }) == 1;
   }
 
   // The separator (P to Q) of a time against its disk, and the estimated
@@ -1144,7 +1164,7 @@ private:
     namespace I = Progressive_medial_axes::internal;
     const double u = 2.220446049250313e-16;
     // (the tolerances of touches_segments() and chord_far_end_parts() in double)
-    const double contact_tolerance = 1e-12, miss_tolerance = 1e-12;
+    const double contact_tolerance = I::floating_contact_tolerance, miss_tolerance = I::floating_contact_tolerance;
     bool uncertain = false;
     for(int i = 0; i < 3; ++i) {
       if(sn[i].is_point || I::segment_contact_known(rel, i)) continue;
@@ -1624,20 +1644,17 @@ private:
     ++filter_statistics().interval_evaluations;
     // in double intervals; where they leave a branch undecided, again with
     // the relations that decide exact ties (refine_relations())
-    for(int attempt = 0; attempt < 2; ++attempt) {
-      if(attempt == 1 && (s == nullptr || !Progressive_medial_axes::internal::refine_relations<CK>(
-                                               t.s_, kind == Progressive_medial_axes::internal::TIME_VANISH ? &line : nullptr, rel)))
-        break;
-      Progressive_medial_axes::internal::Upward_rounding protection;
-      try {
+    const int in_intervals = Progressive_medial_axes::internal::decide_in_intervals<CK>(
+      s != nullptr ? t.s_ : nullptr, kind == Progressive_medial_axes::internal::TIME_VANISH ? &line : nullptr, rel,
+      [&](const Progressive_medial_axes::internal::Triple_relations& r) {
         Interval v;
         Progressive_medial_axes::internal::To_nt_convert<Interval> cv;
         bool undecided = false;
         Progressive_medial_axes::internal::Circle_nt<Interval> circle;
-        bool ok = Progressive_medial_axes::internal::evaluate_time<Interval>(kind, line, t.s_, rel, cv, v, nullptr,
+        bool ok = Progressive_medial_axes::internal::evaluate_time<Interval>(kind, line, t.s_, r, cv, v, nullptr,
                                                                                &undecided, hint ? &circle : nullptr);
         if(!ok && !undecided)
-          return false;
+          return 0;
         if(ok && CGAL_NTS is_finite(v.inf()) && CGAL_NTS is_finite(v.sup())) {
           t.approx_ = v;
           if(hint != nullptr) {   // (to_doubles() says whether its bounds are finite)
@@ -1645,11 +1662,12 @@ private:
             hint->x = circle.x;
             hint->y = circle.y;
           }
-          return true;
+          return 1;
         }
-      } catch(Uncertain_conversion_exception&) {
-      }
-    }
+        return -1;
+      });
+    if(in_intervals >= 0)
+      return in_intervals == 1;
     // (with short coordinates, what the double intervals cannot decide is
     // an exact tie as a rule, which no interval decides: see before_exact())
     if(!t.short_coordinates()) {
@@ -2009,18 +2027,9 @@ private:
   static int interval_disk(const Site_2* s, Progressive_medial_axes::internal::Triple_relations& rel,
                            Progressive_medial_axes::internal::Circle_nt<Interval>& circle)
   {
-    for(int attempt = 0; attempt < 2; ++attempt) {
-      if(attempt == 1 && !Progressive_medial_axes::internal::refine_relations<CK>(s, static_cast<const Site_2*>(nullptr), rel))
-        break;
-      Progressive_medial_axes::internal::Upward_rounding protection;
-      try {
-        const int found = disk_nt_decided<Interval>(s, rel, circle);
-        if(found >= 0)
-          return found;
-      } catch(Uncertain_conversion_exception&) {
-      }
-    }
-    return -1;
+    return Progressive_medial_axes::internal::decide_in_intervals<CK>(
+      s, static_cast<const Site_2*>(nullptr), rel,
+      [&](const Progressive_medial_axes::internal::Triple_relations& r) { return disk_nt_decided<Interval>(s, r, circle); });
   }
 
   // f(number) with the small one-root numbers, or with the GMP ones where

@@ -222,6 +222,15 @@ struct Triple_relations {
   bool separator_on_line = false;
 };
 
+/// In floating point (the double model), a disk that misses a segment or
+/// the separator's line by less than this relative amount (of the squared
+/// length of the segment, of r^2 |d|^2 for the separator d) counts as
+/// touching it: such a disk is an exact tie (through an end point, tangent)
+/// that rounding left a hair short (touches_segments(),
+/// chord_far_end_parts(), and the double model's
+/// check_vanishing_decisions(), which must use the same margin).
+constexpr double floating_contact_tolerance = 1e-12;
+
 /// A circle: centre and radius.
 template <class NT>
 struct Circle_nt {
@@ -832,7 +841,7 @@ int chord_far_end_parts(const NT& px, const NT& py, const NT& qx, const NT& qy,
     // With floating-point numbers, a circle through an endpoint of the
     // separator or tangent to it (an exact tie, common on integer grids)
     // can come out a rounding error short of the line: count it as tangent.
-    if(!std::is_floating_point<NT>::value || rad < -NT(1e-12) * r2d2)
+    if(!std::is_floating_point<NT>::value || rad < -NT(floating_contact_tolerance) * r2d2)
       return 0;
     rad = NT(0);
   }
