@@ -226,10 +226,25 @@ int test_wkt_reading()
   CHECK_INPUT_ERROR(read_wkt("POLYGON EMPTY"), "empty polygon", -1, -1);
   CHECK_INPUT_ERROR(read_wkt("polygon empty"), "empty polygon", -1, -1);
   CHECK_INPUT_ERROR(read_wkt("MULTIPOLYGON EMPTY"), "empty polygon", -1, -1);
-  CHECK_INPUT_ERROR(read_wkt("POLYGON Z ((0 0 0, 1 0 0, 1 1 0, 0 0 0))"), "only 2D coordinates are supported", ANY, ANY);
-  CHECK_INPUT_ERROR(read_wkt("POLYGON M ((0 0 0, 1 0 0, 1 1 0, 0 0 0))"), "only 2D coordinates are supported", ANY, ANY);
-  CHECK_INPUT_ERROR(read_wkt("POLYGON ZM ((0 0 0 0, 1 0 0 0, 1 1 0 0, 0 0 0 0))"), "only 2D coordinates are supported", ANY, ANY);
-  CHECK_INPUT_ERROR(read_wkt("POLYGON ((0 0, 1 0, 1 1 7, 0 0))"), "only 2D coordinates are supported", 0, 2);
+  // Z, M and ZM values are read and ignored: the polygon's projection to the plane
+  const Rings flat = read_wkt("POLYGON ((0 0, 1 0, 1 1, 0 0))");
+  for(const char* text : {"POLYGON Z ((0 0 0, 1 0 5, 1 1 0, 0 0 0))", "POLYGON M ((0 0 0, 1 0 0, 1 1 0, 0 0 0))",
+                          "POLYGON ZM ((0 0 0 0, 1 0 0 0, 1 1 nan 0, 0 0 0 0))", "polygonz((0 0 1,1 0 1,1 1 -1e3,0 0 1))",
+                          "POLYGON ((0 0 0, 1 0 0, 1 1 0, 0 0 0))", "POLYGON ((0 0 0 0, 1 0 0 0, 1 1 0 0, 0 0 0 0))",
+                          "MULTIPOLYGON Z (((0 0 0, 1 0 0, 1 1 0, 0 0 0)))",
+                          "GEOMETRYCOLLECTION Z (POLYGON Z ((0 0 0, 1 0 0, 1 1 0, 0 0 0)), POLYGON Z EMPTY)"})
+    REQUIRE(same_rings(read_wkt(text), flat), text);
+  CHECK_INPUT_ERROR(read_wkt("POLYGON Z EMPTY"), "empty polygon", -1, -1);
+  CHECK_INPUT_ERROR(read_wkt("POLYGON ((0 0, 1 0, 1 1 7, 0 0))"), "ring 0 vertex 2 has 3 coordinates, expected 2", 0, 2);
+  CHECK_INPUT_ERROR(read_wkt("POLYGON Z ((0 0, 1 0, 1 1, 0 0))"), "ring 0 vertex 0 has 2 coordinates, expected 3", 0, 0);
+  CHECK_INPUT_ERROR(read_wkt("POLYGON ((0 0 0, 4 0 0, 4 4 0, 0 0 0), (1 1, 2 1, 2 2, 1 1))"),
+                    "ring 1 vertex 0 has 2 coordinates, expected 3", 1, 0);
+  CHECK_INPUT_ERROR(read_wkt("POLYGON ((0 0 0 0 0, 1 0, 1 1, 0 0))"), "ring 0 vertex 0 has 5 coordinates, expected 2, 3 or 4",
+                    0, 0);
+  CHECK_INPUT_ERROR(read_wkt("MULTIPOLYGON M (((0 0 0, 1 0 0, 1 1 0, 0 0 0)), ((0 0, 1 0, 1 1, 0 0)))"),
+                    "polygon 1: ring 0 vertex 0 has 2 coordinates, expected 3", 0, 0);
+  CHECK_INPUT_ERROR(read_wkt("POLYGON Z Z ((0 0 0, 1 0 0, 1 1 0, 0 0 0))"), "expected '(' or 'EMPTY'", -1, -1);
+  CHECK_INPUT_ERROR(read_wkt("POLYGON ((0 0, 1 0, 1 inf, 0 0))"), "non-finite coordinate: ring 0 vertex 2", 0, 2);
   CHECK_INPUT_ERROR(read_wkt("LINESTRING (0 0, 1 1)"), "not a polygon: found LINESTRING", -1, -1);
   CHECK_INPUT_ERROR(read_wkt("point (0 0)"), "not a polygon: found POINT", -1, -1);
   CHECK_INPUT_ERROR(read_wkt("MULTIPOLYGON (((0 0, 1 0, 1 1, 0 0)), ((2 2, 3 2, 3 3, 2 2)))"),
@@ -388,8 +403,11 @@ int test_geojson_reading()
                     "not a polygon: found LineString in feature 1", -1, -1);
   CHECK_INPUT_ERROR(read_geojson(R"({"type": "MultiPolygon", "coordinates": [[[[0, 0], [1, 0], [1, 1], [0, 0]]], [[[2, 2], [3, 2], [3, 3], [2, 2]]]]})"),
                     "not a polygon: found 2 polygons", -1, -1);
-  CHECK_INPUT_ERROR(read_geojson(R"({"type": "Polygon", "coordinates": [[[0, 0, 0], [1, 0, 0], [1, 1, 0], [0, 0, 0]]]})"),
-                    "only 2D coordinates are supported", 0, 0);
+  // an altitude, or more numbers, ignored
+  REQUIRE(same_rings(read_geojson(R"({"type": "Polygon", "coordinates": [[[0, 0, 0], [1, 0, 2.5], [1, 1], [0, 0, 0, 7]]]})"),
+                     read_geojson(R"({"type": "Polygon", "coordinates": [[[0, 0], [1, 0], [1, 1], [0, 0]]]})")));
+  CHECK_INPUT_ERROR(read_geojson(R"({"type": "Polygon", "coordinates": [[[0, 0], [1, 0, "up"], [1, 1], [0, 0]]]})"),
+                    "malformed GeoJSON: ring 0 vertex 1: expected a number", 0, 1);
   CHECK_INPUT_ERROR(read_geojson(R"({"type": "Polygon", "coordinates": [[[0, 0], [1, 0], [NaN, 1], [0, 0]]]})"),
                     "malformed JSON at line 1, column 55", -1, -1);
   CHECK_INPUT_ERROR(read_geojson(R"({"type": "Polygon", "coordinates": [[[0, 0], [1, 0], [1, 1e999], [0, 0]]]})"),
@@ -440,8 +458,8 @@ int test_multi_reading()
   REQUIRE(p[0].properties == R"({"name":"A","z":1,"a":[1,{"k":"v"}]})" && p[1].properties == p[0].properties);
   REQUIRE(p[2].properties == "{\"name\":\"B \xC3\xA9\"}" && p[2].rings[0][0] == Point(5, 5));
   REQUIRE(p[3].properties.empty() && p[3].rings[0][0] == Point(9, 9));
-  CHECK_INPUT_ERROR(geojson(R"({"type": "MultiPolygon", "coordinates": [[[[0, 0], [1, 0], [1, 1], [0, 0]]], [[[2, 2], [3, 2], [3, 3, 3], [2, 2]]]]})"),
-                    "polygon 1: only 2D coordinates are supported (ring 0 vertex 2", 0, 2);
+  CHECK_INPUT_ERROR(geojson(R"({"type": "MultiPolygon", "coordinates": [[[[0, 0], [1, 0], [1, 1], [0, 0]]], [[[2, 2], [3, 2], [3, 3, null], [2, 2]]]]})"),
+                    "polygon 1: malformed GeoJSON: ring 0 vertex 2: expected a number", 0, 2);
   CHECK_INPUT_ERROR(geojson(R"({"type": "FeatureCollection", "features": [{"type": "Polygon", "coordinates": []}]})"),
                     "feature 0 is a Polygon, not a Feature", -1, -1);
   return 0;
@@ -462,8 +480,7 @@ int test_invalid_files()
   const Invalid_file files[] = {
     { "malformed.wkt", false, "malformed WKT at line 1, column 19: expected ',' or ')'", -1, -1 },
     { "empty.wkt", false, "empty polygon", -1, -1 },
-    { "z_coordinates.wkt", false, "only 2D coordinates are supported", ANY, ANY },
-    { "third_coordinate.wkt", false, "only 2D coordinates are supported", 0, 0 },
+    { "mixed_dimensions.wkt", false, "ring 0 vertex 2 has 3 coordinates, expected 2", 0, 2 },
     { "not_polygon.wkt", false, "not a polygon: found LINESTRING", -1, -1 },
     { "multipolygon_two.wkt", false, "not a polygon: found 2 polygons", -1, -1 },
     { "trailing_garbage.wkt", false, "malformed WKT at line 1, column 32: unexpected text after the polygon", -1, -1 },
@@ -483,7 +500,6 @@ int test_invalid_files()
     { "empty.geojson", false, "empty polygon", -1, -1 },
     { "two_features.geojson", false, "not a polygon: found 2 polygons", -1, -1 },
     { "feature_without_geometry.geojson", false, "empty polygon", -1, -1 },
-    { "z_coordinates.geojson", false, "only 2D coordinates are supported", 0, 0 },
     { "unclosed.geojson", false, "unclosed ring: ring 0 (first point (0, 0), last point (0, 1))", 0, -1 },
     { "non_finite.geojson", false, "malformed JSON at line 1", -1, -1 },
     { "crossing.geojson", true, "self-intersection: ring 0 edge 0 (vertices 0-1) crosses ring 0 edge 2 (vertices 2-3)", 0, 0 },
@@ -514,6 +530,11 @@ int test_invalid_files()
 
 int test_shipped_data()
 {
+  // coordinates with Z, M or ZM values, or an altitude: the same triangle
+  const Rings flat = pma_tool::read_polygon_file<Point>(data("dimensions/flat.wkt"));
+  for(const char* name : {"z_tagged.wkt", "z_untagged.wkt", "zm_multipolygon.wkt", "altitude.geojson"})
+    REQUIRE(same_rings(pma_tool::read_polygon_file<Point>(data(std::string("dimensions/") + name)), flat), name);
+
   const char* names[] = { "syn_cheese1k.wkt", "syn_comb50.wkt", "syn_maze20.wkt", "syn_ngon64.wkt",
                           "syn_sliver500.wkt", "syn_spiral20.wkt", "syn_star2k.wkt", "c1m_GBR_0.wkt" };
   for(const char* name : names) {

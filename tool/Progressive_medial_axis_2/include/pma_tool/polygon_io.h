@@ -282,13 +282,20 @@ private:
     std::string keyword = read_word();
     if(keyword.empty())
       error(kw_begin, "expected 'POLYGON'");
+    // Z, M and ZM coordinates (a tag after the keyword, or glued to it as
+    // in POLYGONZ): the third and fourth values are read and ignored, as
+    // GEOS's two-dimensional operations ignore them
+    int dimension = 0;   // values per point; 0: as the polygon's first point has (2 to 4)
     const std::size_t n = keyword.size();
     for(const char* dim : {"ZM", "Z", "M"}) {
       const std::size_t d = std::strlen(dim);
       if(n > d && keyword.compare(n - d, d, dim) == 0 &&
          (keyword.compare(0, n - d, "POLYGON") == 0 || keyword.compare(0, n - d, "MULTIPOLYGON") == 0 ||
-          keyword.compare(0, n - d, "GEOMETRYCOLLECTION") == 0))
-        throw Input_error("only 2D coordinates are supported");
+          keyword.compare(0, n - d, "GEOMETRYCOLLECTION") == 0)) {
+        dimension = 2 + int(d);
+        keyword.resize(n - d);
+        break;
+      }
     }
     if(keyword != "POLYGON" && keyword != "MULTIPOLYGON" && keyword != "GEOMETRYCOLLECTION")
       throw Input_error("not a polygon: found " + keyword);
@@ -298,14 +305,21 @@ private:
     if(m_p != m_end && is_alpha(*m_p)) {
       const char* w = m_p;
       std::string tag = read_word();
-      if(tag == "Z" || tag == "M" || tag == "ZM")
-        throw Input_error("only 2D coordinates are supported");
+      if(dimension == 0 && (tag == "Z" || tag == "M" || tag == "ZM")) {
+        dimension = 2 + int(tag.size());
+        skip_space();
+        w = m_p;
+        tag = read_word();
+        if(tag.empty() && m_p != m_end && *m_p == '(')
+          tag = "(";
+      }
       if(tag == "EMPTY")
         return;
-      error(w, "expected '(' or 'EMPTY'");
+      if(tag != "(")
+        error(w, "expected '(' or 'EMPTY'");
     }
     if(keyword == "POLYGON") {
-      read_polygon_text();
+      read_polygon_text(dimension);
       return;
     }
     m_multi = true;
@@ -320,7 +334,7 @@ private:
           if(read_word() != "EMPTY")
             error(w, "expected '('");
         } else {
-          read_polygon_text();
+          read_polygon_text(dimension);
         }
       }
       skip_space();
@@ -368,8 +382,9 @@ private:
       error(m_p, "unexpected text after the polygon");
   }
 
-  // '(' ring (',' ring)* ')', one more polygon
-  void read_polygon_text()
+  // '(' ring (',' ring)* ')', one more polygon, of `dimension` values per
+  // point (0: as many as its first point has)
+  void read_polygon_text(int dimension)
   {
     const std::string prefix = m_multi ? "polygon " + std::to_string(m_out.size()) + ": " : std::string();
     Input_polygon<Point_2> polygon;
@@ -378,7 +393,7 @@ private:
     std::vector<double> xy;
     for(;;) {
       try {
-        read_ring_text(xy, rings.size());
+        read_ring_text(xy, rings.size(), dimension);
         rings.emplace_back();
         finish_ring(rings.back(), xy, rings.size() - 1);
       } catch(const Input_error& e) {
@@ -397,8 +412,9 @@ private:
     }
   }
 
-  // '(' x y (',' x y)* ')'
-  void read_ring_text(std::vector<double>& xy, std::size_t ring)
+  // '(' x y [z [m]] (',' x y [z [m]])* ')': keeps x and y; sets `dimension`
+  // from the first point where it is 0
+  void read_ring_text(std::vector<double>& xy, std::size_t ring, int& dimension)
   {
     xy.clear();
     skip_space();
@@ -417,11 +433,24 @@ private:
         error(m_p, "expected a space and a second coordinate");
       }
       read_coordinate(xy, ring, vertex);
-      const char* after = m_p;
-      skip_space();
-      if(m_p != after && scan_number(m_p, m_end).status != Scanned_number::NOT_A_NUMBER)
-        throw Input_error("only 2D coordinates are supported (" + ring_vertex(ring, vertex) +
-                          " has a third coordinate, at " + line_column(m_begin, m_p) + ")",
+      int values = 2;
+      for(;;) {   // the z and m values, which only need to be numbers
+        const char* after = m_p;
+        skip_space();
+        if(m_p == after)
+          break;
+        const Scanned_number z = scan_number(m_p, m_end);
+        if(z.status == Scanned_number::NOT_A_NUMBER)
+          break;
+        m_p = z.end;
+        ++values;
+      }
+      if(dimension == 0 && values <= 4)
+        dimension = values;
+      if(values != dimension)
+        throw Input_error(ring_vertex(ring, vertex) + " has " + std::to_string(values) + " coordinates, expected " +
+                          (dimension == 0 ? std::string("2, 3 or 4") : std::to_string(dimension)) + " (at " +
+                          line_column(m_begin, m_p) + ")",
                           static_cast<int>(ring), static_cast<int>(vertex));
       if(m_p != m_end && *m_p == ',') {
         ++m_p;
@@ -594,13 +623,14 @@ private:
         if(!pos.is_array() || pos.size() < 2)
           throw Input_error(prefix + "malformed GeoJSON: " + ring_vertex(r, i) + " is not a position of 2 numbers",
                             static_cast<int>(r), static_cast<int>(i));
-        if(pos.size() > 2)
-          throw Input_error(prefix + "only 2D coordinates are supported (" + ring_vertex(r, i) +
-                            " has a third coordinate)", static_cast<int>(r), static_cast<int>(i));
-        for(int k = 0; k < 2; ++k) {
+        // (a third value, the altitude of RFC 7946, or more: read as numbers
+        // and ignored, as GEOS's two-dimensional operations ignore them)
+        for(std::size_t k = 0; k < pos.size(); ++k) {
           if(!pos[k].is_number())
             throw Input_error(prefix + "malformed GeoJSON: " + ring_vertex(r, i) + ": expected a number",
                               static_cast<int>(r), static_cast<int>(i));
+          if(k >= 2)
+            continue;
           const double v = pos[k].template get<double>();
           if(!std::isfinite(v))
             throw Input_error(prefix + "non-finite coordinate: " + ring_vertex(r, i), static_cast<int>(r),
@@ -775,10 +805,14 @@ private:
       xy.clear();
       for(Element pos : ring.get_array()) {
         simdjson::dom::array a = pos.get_array();
-        if(a.size() != 2)
+        if(a.size() < 2)
           throw Give_up();
-        for(Element x : a)
-          xy.push_back(x.get_double()); // (also an integer, converted)
+        std::size_t k = 0;
+        for(Element x : a) {
+          const double v = x.get_double(); // (also an integer, converted; throws if not a number)
+          if(k++ < 2)
+            xy.push_back(v);   // (an altitude and more: ignored, as by the other reader)
+        }
       }
       out.rings.emplace_back();
       finish_ring(out.rings.back(), xy, r);
@@ -880,9 +914,13 @@ order is kept exactly as written. The geometric validity is *not* checked: call
 `validate_polygon_rings()` for that. Errors in a polygon of a `MULTIPOLYGON` or a
 collection start with `polygon <k>: `.
 
+Z, M and ZM coordinates (tagged, as in `POLYGON Z`, or not) are read and their third
+and fourth values ignored: the polygon is its projection to the plane, as in GEOS's
+two-dimensional operations.
+
 \throws Input_error for malformed WKT (with line and column), input without a polygon,
-Z/M/ZM coordinates, other geometry types, trailing text, non-finite numbers, unclosed
-rings and rings with fewer than 4 points.
+points of one polygon with different numbers of values, other geometry types, trailing
+text, non-finite x or y, unclosed rings and rings with fewer than 4 points.
 
 \tparam Point_2 a point type constructible from two `double`s.
 */
@@ -907,11 +945,12 @@ Reads polygons with holes written as GeoJSON (RFC 7946): a `Polygon`, `MultiPoly
 `GeometryCollection` geometry, a `Feature` or a `FeatureCollection` of them. Features
 without geometry (`null`) and empty polygons are skipped. Each polygon carries the
 `properties` of its feature. Parsing is done by nlohmann-json; numbers are converted as
-`strtod` converts them. Checks and result are as for `read_wkt_polygons()`.
+`strtod` converts them. Checks and result are as for `read_wkt_polygons()`. A position
+may hold an altitude (and more numbers), which is ignored.
 
 \throws Input_error for malformed JSON (with line and column), other GeoJSON types,
-input without a polygon, coordinates with more than 2 dimensions, numbers out of the
-range of `double`, unclosed rings and rings with fewer than 4 points.
+input without a polygon, positions of fewer than 2 numbers, numbers out of the range of
+`double`, unclosed rings and rings with fewer than 4 points.
 
 \tparam Point_2 a point type constructible from two `double`s.
 */
