@@ -234,6 +234,12 @@ int test_wkt_reading()
                           "MULTIPOLYGON Z (((0 0 0, 1 0 0, 1 1 0, 0 0 0)))",
                           "GEOMETRYCOLLECTION Z (POLYGON Z ((0 0 0, 1 0 0, 1 1 0, 0 0 0)), POLYGON Z EMPTY)"})
     REQUIRE(same_rings(read_wkt(text), flat), text);
+  // PostGIS's extended WKT: the SRID is dropped
+  REQUIRE(same_rings(read_wkt("SRID=4326;POLYGON ((0 0, 1 0, 1 1, 0 0))"), flat));
+  REQUIRE(same_rings(read_wkt("srid = -1 ; POLYGON Z ((0 0 0, 1 0 0, 1 1 0, 0 0 0))"), flat));
+  CHECK_INPUT_ERROR(read_wkt("SRID=;POLYGON ((0 0, 1 0, 1 1, 0 0))"), "malformed WKT at line 1, column 6: expected the SRID's number",
+                    -1, -1);
+  CHECK_INPUT_ERROR(read_wkt("SRID=4326 POLYGON ((0 0, 1 0, 1 1, 0 0))"), "expected ';' after the SRID", -1, -1);
   CHECK_INPUT_ERROR(read_wkt("POLYGON Z EMPTY"), "empty polygon", -1, -1);
   CHECK_INPUT_ERROR(read_wkt("POLYGON ((0 0, 1 0, 1 1 7, 0 0))"), "ring 0 vertex 2 has 3 coordinates, expected 2", 0, 2);
   CHECK_INPUT_ERROR(read_wkt("POLYGON Z ((0 0, 1 0, 1 1, 0 0))"), "ring 0 vertex 0 has 2 coordinates, expected 3", 0, 0);

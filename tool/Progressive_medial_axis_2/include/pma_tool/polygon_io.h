@@ -266,6 +266,7 @@ public:
     skip_space();
     if(m_p == m_end)
       throw Input_error("empty input: no polygon found");
+    skip_srid();
     geometry(0);
     expect_end();
     if(m_out.empty())
@@ -357,6 +358,28 @@ private:
   {
     while(m_p != m_end && is_space(*m_p))
       ++m_p;
+  }
+
+  // PostGIS's extended WKT (ST_AsEWKT) starts with `SRID=<integer>;`: the
+  // reference system is not needed here, so it is read and dropped
+  void skip_srid()
+  {
+    const char* w = m_p;
+    if(read_word() != "SRID") {
+      m_p = w;
+      return;
+    }
+    skip_space();
+    expect('=', "expected '=' after SRID");
+    skip_space();
+    if(m_p != m_end && *m_p == '-')
+      ++m_p;
+    const char* digits = m_p;
+    while(m_p != m_end && is_digit(*m_p))
+      ++m_p;
+    if(m_p == digits)
+      error(m_p, "expected the SRID's number");
+    expect(';', "expected ';' after the SRID");
   }
 
   std::string read_word()
@@ -916,7 +939,8 @@ collection start with `polygon <k>: `.
 
 Z, M and ZM coordinates (tagged, as in `POLYGON Z`, or not) are read and their third
 and fourth values ignored: the polygon is its projection to the plane, as in GEOS's
-two-dimensional operations.
+two-dimensional operations. PostGIS's extended WKT is read too: a leading
+`SRID=<integer>;` is dropped.
 
 \throws Input_error for malformed WKT (with line and column), input without a polygon,
 points of one polygon with different numbers of values, other geometry types, trailing
