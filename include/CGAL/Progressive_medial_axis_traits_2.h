@@ -1163,13 +1163,13 @@ private:
   {
     namespace I = Progressive_medial_axes::internal;
     const double u = 2.220446049250313e-16;
-    // (the tolerances of touches_segments() and chord_far_end_parts() in double)
-    const double contact_tolerance = I::floating_contact_tolerance, miss_tolerance = I::floating_contact_tolerance;
+    // (the tolerance of touches_segments() and chord_far_end_parts() in double)
+    const double tolerance = I::floating_contact_tolerance;
     bool uncertain = false;
     for(int i = 0; i < 3; ++i) {
       if(sn[i].is_point || I::segment_contact_known(rel, i)) continue;
       const double dx = sn[i].bx - sn[i].ax, dy = sn[i].by - sn[i].ay, d1 = std::fabs(dx) + std::fabs(dy);
-      const double low = -contact_tolerance * (dx * dx + dy * dy);
+      const double low = -tolerance * (dx * dx + dy * dy);
       const double before = (c.x - sn[i].ax) * dx + (c.y - sn[i].ay) * dy, beyond = (sn[i].bx - c.x) * dx + (sn[i].by - c.y) * dy;
       const double margin = d1 * dc + 4 * u * d1 * (std::fabs(c.x - sn[i].ax) + std::fabs(c.y - sn[i].ay) + d1);
       if(before < low - margin || beyond < low - margin)
@@ -1181,7 +1181,7 @@ private:
       throw I::Uncertain_decision();
     if(rel.separator_on_line)
       return;
-    if(!(std::fabs(chord.r2d2 - chord.h * chord.h + miss_tolerance * chord.r2d2) > chord.drad))
+    if(!(std::fabs(chord.r2d2 - chord.h * chord.h + tolerance * chord.r2d2) > chord.drad))
       throw I::Uncertain_decision();
   }
 

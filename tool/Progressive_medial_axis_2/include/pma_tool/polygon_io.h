@@ -310,13 +310,11 @@ private:
         dimension = 2 + int(tag.size());
         skip_space();
         w = m_p;
-        tag = read_word();
-        if(tag.empty() && m_p != m_end && *m_p == '(')
-          tag = "(";
+        tag = read_word();   // (none before the '(')
       }
       if(tag == "EMPTY")
         return;
-      if(tag != "(")
+      if(!tag.empty() || m_p == m_end || *m_p != '(')
         error(w, "expected '(' or 'EMPTY'");
     }
     if(keyword == "POLYGON") {
