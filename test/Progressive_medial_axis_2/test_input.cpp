@@ -403,10 +403,15 @@ int test_geojson_reading()
                     "not a polygon: found Point", -1, -1);
   CHECK_INPUT_ERROR(read_geojson(R"({"type": "Feature", "geometry": null})"), "empty polygon", -1, -1);
   CHECK_INPUT_ERROR(read_geojson(R"({"type": "FeatureCollection", "features": []})"), "empty polygon", -1, -1);
-  CHECK_INPUT_ERROR(read_geojson(R"({"type": "FeatureCollection", "features": [{"type": "Feature", "geometry":
+  // points and lines are skipped; with nothing else, the first is named
+  REQUIRE(read_geojson(R"({"type": "FeatureCollection", "features": [{"type": "Feature", "geometry":
                       {"type": "Polygon", "coordinates": [[[0, 0], [1, 0], [1, 1], [0, 0]]]}}, {"type": "Feature",
-                      "geometry": {"type": "LineString", "coordinates": [[0, 0], [1, 1]]}}]})"),
-                    "not a polygon: found LineString in feature 1", -1, -1);
+                      "geometry": {"type": "LineString", "coordinates": [[0, 0], [1, 1]]}}]})").size() == 1);
+  CHECK_INPUT_ERROR(read_geojson(R"({"type": "FeatureCollection", "features": [{"type": "Feature", "geometry": null},
+                      {"type": "Feature", "geometry": {"type": "GeometryCollection", "geometries": [{"type": "MultiPoint",
+                      "coordinates": [[0, 0]]}]}}, {"type": "Feature", "geometry": {"type": "LineString", "coordinates":
+                      [[0, 0], [1, 1]]}}]})"),
+                    "not a polygon: found MultiPoint in feature 1", -1, -1);
   CHECK_INPUT_ERROR(read_geojson(R"({"type": "MultiPolygon", "coordinates": [[[[0, 0], [1, 0], [1, 1], [0, 0]]], [[[2, 2], [3, 2], [3, 3], [2, 2]]]]})"),
                     "not a polygon: found 2 polygons", -1, -1);
   // an altitude, or more numbers, ignored
@@ -447,8 +452,26 @@ int test_multi_reading()
   REQUIRE(p.size() == 3 && p[1].rings[0][0] == Point(5, 5) && p[2].rings[0][0] == Point(7, 7));
   CHECK_INPUT_ERROR(wkt("MULTIPOLYGON (((0 0, 1 0, 1 1, 0 0)), ((2 2, 3 2, 3 3, 2 3)))"),
                     "polygon 1: unclosed ring: ring 0", 0, -1);
-  CHECK_INPUT_ERROR(wkt("GEOMETRYCOLLECTION (POLYGON ((0 0, 1 0, 1 1, 0 0)), LINESTRING (0 0, 1 1))"),
-                    "not a polygon: found LINESTRING", -1, -1);
+  // points and lines skipped, counted, the first named; their text is still checked
+  pma_tool::Skipped_geometries skipped;
+  auto wkt_skipping = [&skipped](const std::string& text) {
+    std::istringstream in(text);
+    return pma_tool::read_wkt_polygons<Point>(in, &skipped);
+  };
+  p = wkt_skipping("GEOMETRYCOLLECTION (LINESTRING Z (0 0 1, 1 1 2), POLYGON ((0 0, 1 0, 1 1, 0 0)), POINT EMPTY, "
+                   "MULTIPOINT (1 2, 3 4), MULTIPOINT ((1 2), EMPTY), MULTILINESTRING ((0 0, 1 1), (2 2, 3 3)), POINTM (1 2 3))");
+  REQUIRE(p.size() == 1 && p[0].rings[0].size() == 3 && skipped.count == 6 && skipped.first == "LINESTRING");
+  p = wkt_skipping("POLYGON ((0 0, 1 0, 1 1, 0 0))");
+  REQUIRE(p.size() == 1 && skipped.count == 0);
+  CHECK_INPUT_ERROR(wkt("GEOMETRYCOLLECTION (LINESTRING (0 0, 1 1), POINT (1 1))"), "not a polygon: found LINESTRING", -1, -1);
+  CHECK_INPUT_ERROR(wkt("GEOMETRYCOLLECTION (POINT (1), POLYGON ((0 0, 1 0, 1 1, 0 0)))"),
+                    "malformed WKT at line 1, column 29: expected a number", -1, -1);
+  CHECK_INPUT_ERROR(wkt("GEOMETRYCOLLECTION (LINESTRING (0 0, 1 y), POLYGON ((0 0, 1 0, 1 1, 0 0)))"),
+                    "malformed WKT at line 1, column 40: expected a number", -1, -1);
+  CHECK_INPUT_ERROR(wkt("GEOMETRYCOLLECTION (POINT (1 2 3 4 5), POLYGON ((0 0, 1 0, 1 1, 0 0)))"),
+                    "malformed WKT at line 1, column 36: expected ',' or ')'", -1, -1);
+  CHECK_INPUT_ERROR(wkt("GEOMETRYCOLLECTION (CIRCULARSTRING (0 0, 1 1, 2 0), POLYGON ((0 0, 1 0, 1 1, 0 0)))"),
+                    "not a polygon: found CIRCULARSTRING", -1, -1);
   CHECK_INPUT_ERROR(wkt("GEOMETRYCOLLECTION EMPTY"), "empty polygon", -1, -1);
   CHECK_INPUT_ERROR(wkt("MULTIPOLYGON (((0 0, 1 0, 1 1, 0 0))"), "malformed WKT at line 1, column 37", -1, -1);
 
@@ -464,6 +487,31 @@ int test_multi_reading()
   REQUIRE(p[0].properties == R"({"name":"A","z":1,"a":[1,{"k":"v"}]})" && p[1].properties == p[0].properties);
   REQUIRE(p[2].properties == "{\"name\":\"B \xC3\xA9\"}" && p[2].rings[0][0] == Point(5, 5));
   REQUIRE(p[3].properties.empty() && p[3].rings[0][0] == Point(9, 9));
+  // points and lines beside the polygons, skipped and named as both readers name them
+  // (check_geojson_readers() compares the fast reader's count and name to the other's)
+  const std::string mixed = R"({"type": "FeatureCollection", "features": [
+    {"type": "Feature", "properties": {"name": "A"}, "geometry": {"type": "Polygon", "coordinates": [[[0, 0], [1, 0], [1, 1], [0, 0]]]}},
+    {"type": "Feature", "properties": {"name": "road"}, "geometry": {"type": "MultiLineString", "coordinates": [[[0, 0], [1, 1]]]}},
+    {"type": "Feature", "geometry": {"type": "GeometryCollection", "geometries": [{"type": "Point", "coordinates": [0, 0, 4]},
+      {"type": "Polygon", "coordinates": [[[5, 5], [6, 5], [6, 6], [5, 5]]]}]}}]})";
+  check_geojson_readers(mixed);
+  {
+    std::istringstream in(mixed);
+    pma_tool::Skipped_geometries k;
+    p = pma_tool::read_geojson_polygons<Point>(in, &k);
+    REQUIRE(p.size() == 2 && p[0].properties == R"({"name":"A"})" && p[1].rings[0][0] == Point(5, 5));
+    REQUIRE(k.count == 2 && k.first == "MultiLineString in feature 1");
+  }
+  for(const char* one : {R"({"type": "GeometryCollection", "geometries": [{"type": "LineString", "coordinates": [[0, 0], [1, 1]]},
+                           {"type": "Polygon", "coordinates": [[[0, 0], [1, 0], [1, 1], [0, 0]]]}]})",
+                         R"({"type": "Feature", "geometry": {"type": "GeometryCollection", "geometries": [{"type": "Polygon",
+                           "coordinates": [[[0, 0], [1, 0], [1, 1], [0, 0]]]}, {"type": "Point", "coordinates": [0, 0]}]}})"}) {
+    check_geojson_readers(one);
+    std::istringstream in(one);
+    pma_tool::Skipped_geometries k;
+    REQUIRE(pma_tool::read_geojson_polygons<Point>(in, &k).size() == 1 && k.count == 1 &&
+            (k.first == "LineString in the geometry" || k.first == "Point in the Feature"));
+  }
   CHECK_INPUT_ERROR(geojson(R"({"type": "MultiPolygon", "coordinates": [[[[0, 0], [1, 0], [1, 1], [0, 0]]], [[[2, 2], [3, 2], [3, 3, null], [2, 2]]]]})"),
                     "polygon 1: malformed GeoJSON: ring 0 vertex 2: expected a number", 0, 2);
   CHECK_INPUT_ERROR(geojson(R"({"type": "FeatureCollection", "features": [{"type": "Polygon", "coordinates": []}]})"),

@@ -433,6 +433,16 @@ std::vector<pma_test::Oracle_curve> pairs_of_polygon(const std::string& out, std
   return pma_test::parse_pairs(k_in);
 }
 
+// The value of `key` in --stats output, or "" if absent.
+std::string stats_value(const std::string& out, const std::string& key)
+{
+  std::istringstream s(out);
+  std::string k, v;
+  while(s >> k >> v)
+    if(k == key) return v;
+  return "";
+}
+
 // Several polygons in one file (MULTIPOLYGON, GEOMETRYCOLLECTION, GeoJSON
 // FeatureCollection): one axis per polygon, ids p<k>:, each against the
 // oracle, the same with 1 and 2 threads, the input properties in GeoJSON.
@@ -472,17 +482,31 @@ void several_polygons(const std::string& data)
   }
 
   // GeoJSON: a FeatureCollection of a MultiPolygon feature (two parts, one
-  // with a hole), a feature without geometry and a Polygon feature; the
-  // output features carry their input feature's properties
+  // with a hole), a feature without geometry, a point and a line (skipped
+  // with a warning) and a Polygon feature; the output features carry their
+  // input feature's properties
   std::ofstream(tmp + "/fc.geojson") << R"({"type": "FeatureCollection", "features": [
     {"type": "Feature", "properties": {"name": "A", "length": "input's", "pop": 12},
      "geometry": {"type": "MultiPolygon", "coordinates": [[[[0, 0], [4, 0], [4, 3], [0, 3], [0, 0]], [[1, 1], [1, 2], [2, 2], [2, 1], [1, 1]]],
                                                           [[[10, 0], [13, 0], [13, 3], [10, 0]]]]}},
     {"type": "Feature", "properties": {"name": "nowhere"}, "geometry": null},
+    {"type": "Feature", "properties": {"name": "label"}, "geometry": {"type": "Point", "coordinates": [2, 2]}},
+    {"type": "Feature", "properties": {"name": "road"}, "geometry": {"type": "LineString", "coordinates": [[0, 0], [9, 9]]}},
     {"type": "Feature", "properties": {"name": "B", "tags": {"x": [1, 2]}},
      "geometry": {"type": "Polygon", "coordinates": [[[20, 0], [22, 0], [21, 1], [20, 0]]]}}]})";
   Result g = run(tool + " --pairs --geojson " + tmp + "/fc_axis.geojson " + tmp + "/fc.geojson");
   CHECK(g.status == 0, "FeatureCollection: exit status " << g.status << ": " << g.err);
+  CHECK(count_lines(g.err) == 1 && g.err.find("warning: " + tmp + "/fc.geojson: skipped 2 point and line geometries") !=
+                                       std::string::npos && g.err.find("(the first: Point in feature 2)") != std::string::npos,
+        "FeatureCollection: the skipped point and line: " << g.err);
+  Result gs = run(tool + " --stats " + tmp + "/fc.geojson");
+  CHECK(gs.status == 0 && stats_value(gs.out, "polygons") == "3" && stats_value(gs.out, "skipped_geometries") == "2",
+        "FeatureCollection --stats: polygons " << stats_value(gs.out, "polygons") << ", skipped_geometries "
+        << stats_value(gs.out, "skipped_geometries"));
+  // nothing but points and lines: the first is named
+  std::ofstream(tmp + "/points.geojson") << R"({"type": "FeatureCollection", "features": [
+    {"type": "Feature", "geometry": {"type": "Point", "coordinates": [2, 2]}}]})";
+  check_bad_input(tmp + "/points.geojson", "not a polygon: found Point in feature 0");
   std::size_t per_polygon[3] = {0, 0, 0};
   for(std::size_t k = 0; k < 3; ++k) pairs_of_polygon(g.out, k, &per_polygon[k]);
   try {
@@ -585,16 +609,6 @@ void repair(const std::string& data)
           v.out.compare(0, w.out.size(), w.out) == 0, "--repair changed a valid polygon");
   Result u = run(tool + " --repaired-out " + tmp + "/x.wkt " + data + "/syn_comb50.wkt");
   CHECK(u.status == 2, "--repaired-out without --repair: exit status " << u.status);
-}
-
-// The value of `key` in --stats output, or "" if absent.
-std::string stats_value(const std::string& out, const std::string& key)
-{
-  std::istringstream s(out);
-  std::string k, v;
-  while(s >> k >> v)
-    if(k == key) return v;
-  return "";
 }
 
 // A large input (over 512 KB) runs again with glibc's malloc on transparent

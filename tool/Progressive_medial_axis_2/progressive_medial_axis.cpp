@@ -63,10 +63,10 @@ const char* usage_text =
   "\n"
   "Computes the medial axis of each polygon of the input (WKT POLYGON, MULTIPOLYGON,\n"
   "GEOMETRYCOLLECTION; GeoJSON Polygon, MultiPolygon, GeometryCollection, Feature,\n"
-  "FeatureCollection; Z and M values are ignored): in one shot (divide and conquer,\n"
-  "in parallel), or for one polygon progressively (region growing, or boundary\n"
-  "evolution with --progressive boundary) with --step, --frames, --html or\n"
-  "--progressive.\n"
+  "FeatureCollection; Z and M values are ignored, points and lines skipped): in one\n"
+  "shot (divide and conquer, in parallel), or for one polygon progressively (region\n"
+  "growing, or boundary evolution with --progressive boundary) with --step,\n"
+  "--frames, --html or --progressive.\n"
   "Generator ids: e<r>.<i> is the edge from vertex i to vertex i+1 of ring r\n"
   "(ring 0 the outer ring, ring k the k-th hole), v<r>.<i> the reflex vertex i;\n"
   "with several polygons, p<k>: in front (k the polygon's index in input order).\n"
@@ -582,12 +582,20 @@ int run(const Options& o)
   // (time_read is the reading alone; time_total counts TBB's start too)
   const auto t_read = std::chrono::steady_clock::now();
   std::vector<pma_tool::Input_polygon<CGAL::Epick::Point_2> > input;
+  pma_tool::Skipped_geometries skipped;
+  auto warn_skipped = [](const std::string& file, const pma_tool::Skipped_geometries& k) {
+    if(k.count > 0)
+      std::cerr << "progressive_medial_axis: warning: " << file << ": skipped " << k.count
+                << (k.count == 1 ? " point or line geometry, which has" : " point and line geometries, which have")
+                << " no medial axis (the first: " << k.first << ")\n";
+  };
   try {
-    input = pma_tool::read_polygons_file<CGAL::Epick::Point_2>(o.input);
+    input = pma_tool::read_polygons_file<CGAL::Epick::Point_2>(o.input, &skipped);
   } catch(const CGAL::Progressive_medial_axes::Input_error& e) {
     std::cerr << o.input << ": " << e.what() << "\n";
     return 2;
   }
+  warn_skipped(o.input, skipped);
   // --union: the second polygon, read and checked here (INPUT's is checked
   // below, with every input polygon)
   std::vector<pma_tool::Input_polygon<CGAL::Epick::Point_2> > other;
@@ -600,7 +608,9 @@ int run(const Options& o)
     try {
       one_polygon(input.size());
       file = &o.union_with;
-      other = pma_tool::read_polygons_file<CGAL::Epick::Point_2>(o.union_with);
+      pma_tool::Skipped_geometries other_skipped;
+      other = pma_tool::read_polygons_file<CGAL::Epick::Point_2>(o.union_with, &other_skipped);
+      warn_skipped(o.union_with, other_skipped);
       one_polygon(other.size());
       CGAL::Progressive_medial_axes::validate_polygon(other[0].rings);
     } catch(const CGAL::Progressive_medial_axes::Input_error& e) {
@@ -1083,7 +1093,7 @@ int run(const Options& o)
                 s.input_vertices, s.holes, s.triangles, steps, progressive ? pma->current_step() : steps);
     std::printf("mode %s\nthreads %d\ntime_total %.6f\n", progressive ? (boundary ? "boundary" : "region") : "oneshot",
                 threads, total_seconds);
-    std::printf("polygons %zu\n", jobs.size());
+    std::printf("polygons %zu\nskipped_geometries %zu\n", jobs.size(), skipped.count);
     std::printf("traits %s\n", o.traits.c_str());
     std::printf("huge_pages %d\n", heap_on_huge_pages() ? 1 : 0);
     std::printf("time_read %.6f\ntime_validate %.6f\ntime_triangulate %.6f\ntime_merge %.6f\n",

@@ -117,8 +117,18 @@ private:
   }
   std::string geometry(int depth)
   {
-    const int kind = choice(depth < 2 ? 3 : 2);
     std::vector<std::string> members;
+    if(choice(16) == 15) {   // a point or a line: both readers skip it and name the first alike
+      static const char* const types[] = { "Point", "MultiPoint", "LineString", "MultiLineString" };
+      const int t = choice(4);
+      std::string c = "[" + space() + number() + comma() + number() + space() + "]";
+      static const int levels[] = { 0, 1, 1, 2 };   // of arrays around a position
+      for(int level = 0; level < levels[t]; ++level) c = "[" + space() + c + space() + "]";
+      members = { "\"type\"" + colon() + "\"" + types[t] + "\"", "\"coordinates\"" + colon() + c };
+      extras(members);
+      return object(members);
+    }
+    const int kind = choice(depth < 2 ? 3 : 2);
     if(kind == 0) {
       members = { "\"type\"" + colon() + "\"Polygon\"", "\"coordinates\"" + colon() + polygon() };
     } else if(kind == 1) {

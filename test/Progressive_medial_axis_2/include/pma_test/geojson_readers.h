@@ -25,14 +25,18 @@ std::string geojson_readers_differ(const std::string& text, bool& fast_read)
   const char* b = text.data();
   const char* e = b + text.size();
   Polygons fast, slow;
-  fast_read = pma_tool::internal::Geojson_polygons_fast_reader<Point_2>(b, e).read(fast);
+  pma_tool::Skipped_geometries fast_skipped, slow_skipped;
+  fast_read = pma_tool::internal::Geojson_polygons_fast_reader<Point_2>(b, e).read(fast, &fast_skipped);
   if(!fast_read)
     return std::string();
   try {
-    slow = pma_tool::internal::Geojson_polygons_reader<Point_2>(b, e).read();
+    slow = pma_tool::internal::Geojson_polygons_reader<Point_2>(b, e).read(&slow_skipped);
   } catch(const pma_tool::Input_error& error) {
     return std::string("the fast reader reads what the other rejects: ") + error.what();
   }
+  if(fast_skipped.count != slow_skipped.count || fast_skipped.first != slow_skipped.first)
+    return "the readers skipped " + std::to_string(fast_skipped.count) + " (" + fast_skipped.first + ") and " +
+           std::to_string(slow_skipped.count) + " (" + slow_skipped.first + ") geometries";
   if(fast.size() != slow.size())
     return "the readers read " + std::to_string(fast.size()) + " and " + std::to_string(slow.size()) + " polygons";
   for(std::size_t k = 0; k < fast.size(); ++k) {

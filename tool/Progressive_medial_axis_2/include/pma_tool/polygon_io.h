@@ -49,7 +49,44 @@ struct Input_polygon
   std::string properties;
 };
 
+/// The geometries a reader skipped: points and lines (`Point`, `MultiPoint`,
+/// `LineString`, `MultiLineString`, in WKT or GeoJSON), which bound no area and so
+/// have no medial axis.  Real collections hold them beside the polygons (labels,
+/// roads, rivers); they are skipped rather than the whole input rejected.  Input
+/// that holds no polygon at all is still an error.
+struct Skipped_geometries
+{
+  std::size_t count = 0;
+  /// The first one skipped, as the reader names it: its type, and for GeoJSON
+  /// in a collection, where it is (`LineString in feature 1`).
+  std::string first;
+
+  void add(const std::string& what)
+  {
+    if(count++ == 0)
+      first = what;
+  }
+  /// The error for input that held no polygon: the first geometry skipped, if any.
+  [[noreturn]] void throw_no_polygon() const
+  {
+    if(count > 0)
+      throw Input_error("not a polygon: found " + first);
+    throw Input_error("empty polygon");
+  }
+};
+
 namespace internal {
+
+/// Whether `type` (a WKT keyword in upper case, or a GeoJSON type) is a point or
+/// line type, skipped by the readers (see Skipped_geometries).
+inline bool is_point_or_line_type(const std::string& type)
+{
+  for(const char* t : {"POINT", "MULTIPOINT", "LINESTRING", "MULTILINESTRING", "Point", "MultiPoint", "LineString",
+                       "MultiLineString"})
+    if(type == t)
+      return true;
+  return false;
+}
 
 using CGAL::Progressive_medial_axes::internal::format_coordinate;
 using CGAL::Progressive_medial_axes::internal::format_point;
@@ -260,7 +297,8 @@ class Wkt_polygon_reader
 public:
   Wkt_polygon_reader(const char* begin, const char* end) : m_begin(begin), m_p(begin), m_end(end) {}
 
-  std::vector<Input_polygon<Point_2> > read()
+  /// The polygons; with `skipped`, also what was skipped (see Skipped_geometries).
+  std::vector<Input_polygon<Point_2> > read(Skipped_geometries* skipped = nullptr)
   {
     m_p = after_byte_order_mark(m_p, m_end);
     skip_space();
@@ -270,7 +308,9 @@ public:
     geometry(0);
     expect_end();
     if(m_out.empty())
-      throw Input_error("empty polygon");
+      m_skipped.throw_no_polygon();
+    if(skipped != nullptr)
+      *skipped = m_skipped;
     return std::move(m_out);
   }
 
@@ -290,13 +330,19 @@ private:
     const std::size_t n = keyword.size();
     for(const char* dim : {"ZM", "Z", "M"}) {
       const std::size_t d = std::strlen(dim);
-      if(n > d && keyword.compare(n - d, d, dim) == 0 &&
-         (keyword.compare(0, n - d, "POLYGON") == 0 || keyword.compare(0, n - d, "MULTIPOLYGON") == 0 ||
-          keyword.compare(0, n - d, "GEOMETRYCOLLECTION") == 0)) {
-        dimension = 2 + int(d);
-        keyword.resize(n - d);
-        break;
+      if(n > d && keyword.compare(n - d, d, dim) == 0) {
+        const std::string base = keyword.substr(0, n - d);
+        if(base == "POLYGON" || base == "MULTIPOLYGON" || base == "GEOMETRYCOLLECTION" || is_point_or_line_type(base)) {
+          dimension = 2 + int(d);
+          keyword = base;
+          break;
+        }
       }
+    }
+    if(is_point_or_line_type(keyword)) {
+      skip_geometry_text();
+      m_skipped.add(keyword);
+      return;
     }
     if(keyword != "POLYGON" && keyword != "MULTIPOLYGON" && keyword != "GEOMETRYCOLLECTION")
       throw Input_error("not a polygon: found " + keyword);
@@ -350,6 +396,62 @@ private:
   [[noreturn]] void error(const char* at, const std::string& what) const
   {
     throw Input_error("malformed WKT at " + line_column(m_begin, at) + ": " + what);
+  }
+
+  // The text of a point or line geometry after its keyword, read and
+  // dropped: an optional Z, M or ZM tag, then EMPTY or a list.  A list is
+  // '(' item (',' item)* ')', an item a list, EMPTY, or a point of 2 to 4
+  // numbers.  (This covers POINT, LINESTRING and both forms of MULTIPOINT.)
+  void skip_geometry_text()
+  {
+    skip_space();
+    const char* w = m_p;
+    std::string tag = read_word();
+    if(tag == "Z" || tag == "M" || tag == "ZM") {
+      skip_space();
+      w = m_p;
+      tag = read_word();
+    }
+    if(tag == "EMPTY")
+      return;
+    if(!tag.empty())
+      error(w, "expected '(' or 'EMPTY'");
+    skip_list(0);
+  }
+
+  void skip_list(int depth)
+  {
+    if(depth > 3)
+      error(m_p, "lists nested too deep");
+    expect('(', "expected '(' or 'EMPTY'");
+    for(;;) {
+      skip_space();
+      if(m_p != m_end && *m_p == '(') {
+        skip_list(depth + 1);
+      } else if(m_p != m_end && is_alpha(*m_p) && !scan_number(m_p, m_end).end) {
+        const char* w = m_p;
+        if(read_word() != "EMPTY")
+          error(w, "expected '(', 'EMPTY' or a number");
+      } else {
+        for(int values = 0; values < 4; ++values) {   // a point: 2 to 4 numbers
+          skip_space();
+          const Scanned_number x = scan_number(m_p, m_end);
+          if(x.status == Scanned_number::NOT_A_NUMBER) {
+            if(values < 2)
+              error(m_p, "expected a number");
+            break;
+          }
+          m_p = x.end;
+        }
+      }
+      skip_space();
+      if(m_p != m_end && *m_p == ',') {
+        ++m_p;
+        continue;
+      }
+      expect(')', "expected ',' or ')'");
+      return;
+    }
   }
 
   void skip_space()
@@ -500,6 +602,7 @@ private:
   const char* m_end;
   bool m_multi = false;
   std::vector<Input_polygon<Point_2> > m_out;
+  Skipped_geometries m_skipped;
 };
 
 // ------------------------------------------------------------------ GeoJSON
@@ -516,7 +619,8 @@ public:
 
   Geojson_polygons_reader(const char* begin, const char* end) : m_begin(begin), m_end(end) {}
 
-  std::vector<Input_polygon<Point_2> > read()
+  /// The polygons; with `skipped`, also what was skipped (see Skipped_geometries).
+  std::vector<Input_polygon<Point_2> > read(Skipped_geometries* skipped = nullptr)
   {
     const char* p = after_byte_order_mark(m_begin, m_end);
     const char* q = p;
@@ -554,7 +658,9 @@ public:
       geometry(doc, std::string(), "the geometry");
     }
     if(m_out.empty())
-      throw Input_error("empty polygon");
+      m_skipped.throw_no_polygon();
+    if(skipped != nullptr)
+      *skipped = m_skipped;
     return std::move(m_out);
   }
 
@@ -615,6 +721,8 @@ private:
         geometry(x, properties, where);
     } else if(type == "Feature" || type == "FeatureCollection") {
       throw Input_error("malformed GeoJSON: a " + type + " inside " + where);
+    } else if(is_point_or_line_type(type)) {
+      m_skipped.add(type + (m_multi ? " in " + where : std::string()));
     } else {
       throw Input_error("not a polygon: found " + type + (m_multi ? " in " + where : std::string()));
     }
@@ -673,6 +781,7 @@ private:
   const char* m_end;
   bool m_multi = false;
   std::vector<Input_polygon<Point_2> > m_out;
+  Skipped_geometries m_skipped;
 };
 
 #ifdef PMA_TOOL_WITH_SIMDJSON
@@ -703,9 +812,10 @@ class Geojson_polygons_fast_reader
 public:
   Geojson_polygons_fast_reader(const char* begin, const char* end) : m_begin(begin), m_end(end) {}
 
-  /// The polygons, as `Geojson_polygons_reader::read()` gives them; false if that
-  /// reader has to read the text (an error, or input this one leaves to it).
-  bool read(std::vector<Input_polygon<Point_2> >& out)
+  /// The polygons (and with `skipped`, what was skipped), as
+  /// `Geojson_polygons_reader::read()` gives them; false if that reader has to read
+  /// the text (an error, or input this one leaves to it).
+  bool read(std::vector<Input_polygon<Point_2> >& out, Skipped_geometries* skipped = nullptr)
   {
     try {
       const char* p = after_byte_order_mark(m_begin, m_end);
@@ -716,9 +826,14 @@ public:
       Object o = object(doc);
       const std::string_view type = member(o, "type").get_string();
       if(type == "FeatureCollection") {
-        for(Element f : member(o, "features").get_array())
+        m_multi = true;
+        m_where = IN_FEATURE;
+        for(Element f : member(o, "features").get_array()) {
           feature(object(f));
+          ++m_feature;
+        }
       } else if(type == "Feature") {
+        m_where = IN_THE_FEATURE;
         feature(o);
       } else {
         geometry(o, std::string());
@@ -733,6 +848,8 @@ public:
     if(m_out.empty())
       return false;
     out = std::move(m_out);
+    if(skipped != nullptr)
+      *skipped = m_skipped;
     return true;
   }
 
@@ -804,11 +921,20 @@ private:
     if(type == "Polygon") {
       polygon(member(g, "coordinates").get_array(), properties);
     } else if(type == "MultiPolygon") {
+      m_multi = true;
       for(Element p : member(g, "coordinates").get_array())
         polygon(p.get_array(), properties);
     } else if(type == "GeometryCollection") {
+      m_multi = true;
       for(Element x : member(g, "geometries").get_array())
         geometry(object(x), properties);
+    } else if(is_point_or_line_type(std::string(type))) {
+      // named as the other reader names it
+      std::string what(type);
+      if(m_multi)
+        what += m_where == IN_FEATURE ? " in feature " + std::to_string(m_feature)
+                                      : m_where == IN_THE_FEATURE ? " in the Feature" : " in the geometry";
+      m_skipped.add(what);
     } else {
       throw Give_up();
     }
@@ -845,20 +971,26 @@ private:
   const char* m_begin;
   const char* m_end;
   std::vector<Input_polygon<Point_2> > m_out;
+  Skipped_geometries m_skipped;
+  // where the geometry being read is, to name a skipped one
+  bool m_multi = false;
+  enum { IN_THE_GEOMETRY, IN_THE_FEATURE, IN_FEATURE } m_where = IN_THE_GEOMETRY;
+  std::size_t m_feature = 0;
 };
 #endif
 
 /// Reads GeoJSON: with the fast reader where it is built in and reads the text,
 /// with `Geojson_polygons_reader` otherwise.
 template <class Point_2>
-std::vector<Input_polygon<Point_2> > read_geojson(const char* begin, const char* end)
+std::vector<Input_polygon<Point_2> > read_geojson(const char* begin, const char* end,
+                                                  Skipped_geometries* skipped = nullptr)
 {
 #ifdef PMA_TOOL_WITH_SIMDJSON
   std::vector<Input_polygon<Point_2> > out;
-  if(Geojson_polygons_fast_reader<Point_2>(begin, end).read(out))
+  if(Geojson_polygons_fast_reader<Point_2>(begin, end).read(out, skipped))
     return out;
 #endif
-  return Geojson_polygons_reader<Point_2>(begin, end).read();
+  return Geojson_polygons_reader<Point_2>(begin, end).read(skipped);
 }
 
 inline bool has_extension(const std::string& path, const char* extension)
@@ -927,7 +1059,10 @@ first ring being the outer ring and the others the holes, a `MULTIPOLYGON` or a
 `GEOMETRYCOLLECTION` of them (collections may nest). Keywords are case-insensitive,
 white space (including newlines) is arbitrary, and numbers are read as `strtod` reads
 them in the C locale (whatever the current locale). Empty polygons are skipped; the
-others are returned in input order (parts of a `MULTIPOLYGON` in order).
+others are returned in input order (parts of a `MULTIPOLYGON` in order). Points and
+lines (`POINT`, `MULTIPOINT`, `LINESTRING`, `MULTILINESTRING`, anywhere in the input)
+are skipped too, and counted in `*skipped` if it is given (see `Skipped_geometries`);
+if nothing but points and lines is found, the first one is named in the error.
 
 The rings are checked to be closed (first point equal to the last one), to have at
 least 4 points as written and finite coordinates; the closing point is dropped. Vertex
@@ -941,16 +1076,17 @@ two-dimensional operations. PostGIS's extended WKT is read too: a leading
 `SRID=<integer>;` is dropped.
 
 \throws Input_error for malformed WKT (with line and column), input without a polygon,
-points of one polygon with different numbers of values, other geometry types, trailing
-text, non-finite x or y, unclosed rings and rings with fewer than 4 points.
+points of one polygon with different numbers of values, other geometry types (curves,
+surfaces), trailing text, non-finite x or y, unclosed rings and rings with fewer than 4
+points.
 
 \tparam Point_2 a point type constructible from two `double`s.
 */
 template <class Point_2>
-std::vector<Input_polygon<Point_2> > read_wkt_polygons(std::istream& in)
+std::vector<Input_polygon<Point_2> > read_wkt_polygons(std::istream& in, Skipped_geometries* skipped = nullptr)
 {
   std::string text = internal::read_all(in);
-  return internal::Wkt_polygon_reader<Point_2>(text.data(), text.data() + text.size()).read();
+  return internal::Wkt_polygon_reader<Point_2>(text.data(), text.data() + text.size()).read(skipped);
 }
 
 /// Reads one polygon as `read_wkt_polygons()` does (a `MULTIPOLYGON` or a collection
@@ -965,22 +1101,24 @@ Rings<Point_2> read_wkt_polygon(std::istream& in)
 
 Reads polygons with holes written as GeoJSON (RFC 7946): a `Polygon`, `MultiPolygon` or
 `GeometryCollection` geometry, a `Feature` or a `FeatureCollection` of them. Features
-without geometry (`null`) and empty polygons are skipped. Each polygon carries the
+without geometry (`null`), empty polygons, points and lines are skipped (the latter
+counted in `*skipped`, as by `read_wkt_polygons()`). Each polygon carries the
 `properties` of its feature. Parsing is done by nlohmann-json; numbers are converted as
 `strtod` converts them. Checks and result are as for `read_wkt_polygons()`. A position
 may hold an altitude (and more numbers), which is ignored.
 
-\throws Input_error for malformed JSON (with line and column), other GeoJSON types,
+\throws Input_error for malformed JSON (with line and column), unknown types, a
+`Feature` or `FeatureCollection` inside a geometry,
 input without a polygon, positions of fewer than 2 numbers, numbers out of the range of
 `double`, unclosed rings and rings with fewer than 4 points.
 
 \tparam Point_2 a point type constructible from two `double`s.
 */
 template <class Point_2>
-std::vector<Input_polygon<Point_2> > read_geojson_polygons(std::istream& in)
+std::vector<Input_polygon<Point_2> > read_geojson_polygons(std::istream& in, Skipped_geometries* skipped = nullptr)
 {
   std::string text = internal::read_all(in);
-  return internal::read_geojson<Point_2>(text.data(), text.data() + text.size());
+  return internal::read_geojson<Point_2>(text.data(), text.data() + text.size(), skipped);
 }
 
 /// Reads one polygon as `read_geojson_polygons()` does, and throws `Input_error` for more.
@@ -1001,7 +1139,7 @@ character is `{`, WKT otherwise.
 and the errors of `read_wkt_polygons()` and `read_geojson_polygons()`.
 */
 template <class Point_2>
-std::vector<Input_polygon<Point_2> > read_polygons_file(const std::string& path)
+std::vector<Input_polygon<Point_2> > read_polygons_file(const std::string& path, Skipped_geometries* skipped = nullptr)
 {
   const std::string text = internal::read_file(path);
   const char* b = text.data();
@@ -1018,8 +1156,8 @@ std::vector<Input_polygon<Point_2> > read_polygons_file(const std::string& path)
     geojson = (p != e && *p == '{');
   }
   if(geojson)
-    return internal::read_geojson<Point_2>(b, e);
-  return internal::Wkt_polygon_reader<Point_2>(b, e).read();
+    return internal::read_geojson<Point_2>(b, e, skipped);
+  return internal::Wkt_polygon_reader<Point_2>(b, e).read(skipped);
 }
 
 /// Reads one polygon as `read_polygons_file()` does, and throws `Input_error` for more.
