@@ -1931,6 +1931,7 @@ private:
       }
     }
     ++filter_statistics().mpfr_evaluations;
+    const bool short_s = short_coordinates(s, s);
     const std::optional<bool> decided = before_exact<bool>(
       [&]() -> std::optional<bool> {
         Progressive_medial_axes::internal::Circle_nt<Mpfr> circle;
@@ -1950,12 +1951,12 @@ private:
           ++filter_statistics().rational_evaluations;
           return round_exactly(circle);
         };
-        return with_one_root_numbers(one_root);
-      }, short_coordinates(s, s));
+        return with_one_root_numbers(short_s, one_root);
+      }, short_s);
     if(decided)
       return *decided;
     ++filter_statistics().exact_evaluations;
-    return with_nested_numbers(short_coordinates(s, s), [&](auto number) {
+    return with_nested_numbers(short_s, [&](auto number) {
       typedef decltype(number) N;
       Progressive_medial_axes::internal::Circle_nt<N> circle;
       if(!disk_nt<N>(s, rel, circle))
@@ -2004,6 +2005,7 @@ private:
         return false;
       return bool(a.x == b.x && a.y == b.y && a.r == b.r);
     };
+    const bool short_st = short_coordinates(s, t);
     const std::optional<bool> decided = before_exact<bool>(
       [&]() -> std::optional<bool> {   // MPFR intervals decide only that the disks differ
         Progressive_medial_axes::internal::Circle_nt<Mpfr> a, b;
@@ -2013,10 +2015,10 @@ private:
           return false;
         return std::nullopt;
       },
-      [&]() -> std::optional<bool> { return with_one_root_numbers(equal); }, short_coordinates(s, t));
+      [&]() -> std::optional<bool> { return with_one_root_numbers(short_st, equal); }, short_st);
     if(decided)
       return *decided;
-    return with_nested_numbers(short_coordinates(s, t), equal);
+    return with_nested_numbers(short_st, equal);
   }
 
   // The disk of the triple in double intervals: 1, 0 if there is none, -1
@@ -2032,17 +2034,21 @@ private:
       [&](const Progressive_medial_axes::internal::Triple_relations& r) { return disk_nt_decided<Interval>(s, r, circle); });
   }
 
-  // f(number) with the small one-root numbers, or with the GMP ones where
-  // they overflow.
+  // f(number) with the small one-root numbers if the coordinates are short,
+  // or with the GMP ones where they overflow.  (Coordinates of more than 24
+  // bits, as decimal GIS data has, overflow the small numbers at once: on a
+  // polygon of land-10m the tries cost 4,980 exceptions.)
   template <class F>
-  static auto with_one_root_numbers(const F& f)
+  static auto with_one_root_numbers(bool short_coordinates, const F& f)
   {
-    try {
-      return f(Progressive_medial_axes::internal::Small_one_root());
-    } catch(Progressive_medial_axes::internal::Small_rational_overflow&) {
-      ++filter_statistics().small_rational_overflows;
-      return f(Progressive_medial_axes::internal::One_root_rational());
+    if(short_coordinates) {
+      try {
+        return f(Progressive_medial_axes::internal::Small_one_root());
+      } catch(Progressive_medial_axes::internal::Small_rational_overflow&) {
+        ++filter_statistics().small_rational_overflows;
+      }
     }
+    return f(Progressive_medial_axes::internal::One_root_rational());
   }
 
   // f(number) in nested-root numbers, in a context of their own: with

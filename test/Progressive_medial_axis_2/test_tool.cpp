@@ -728,6 +728,14 @@ int main(int argc, char** argv)
                        "syn_t_both_sides", "syn_t_both_sides_two_holes", "syn_t_both_sides_square"})
     pairs_against_oracle(data + "/touching/" + f + ".wkt", {-1, 1, 2, 3, 5, 50, 400});
   pairs_against_oracle(data + "/touching/c1m_PNG_21.wkt", {-1, 3000});
+  // a one-shot's `steps` (counted without an axis) is the progressive run's
+  for(const std::string f : {"/syn_cheese1k.wkt", "/touching/syn_pinch.wkt", "/touching/c1m_PNG_21.wkt"}) {
+    Result one = run(tool + " --stats " + data + f), step = run(tool + " --stats --step 0 " + data + f);
+    CHECK(one.status == 0 && step.status == 0 && !stats_value(one.out, "steps").empty() &&
+          stats_value(one.out, "steps") == stats_value(step.out, "steps"),
+          f << ": steps " << stats_value(one.out, "steps") << " in one shot, " << stats_value(step.out, "steps")
+            << " at --step 0");
+  }
   outputs(data);
   boundary_evolution(data);
   analysis_outputs(data);
