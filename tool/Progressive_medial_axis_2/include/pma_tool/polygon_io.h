@@ -339,13 +339,11 @@ private:
         }
       }
     }
-    if(is_point_or_line_type(keyword)) {
-      skip_geometry_text();
-      m_skipped.add(keyword);
-      return;
-    }
-    if(keyword != "POLYGON" && keyword != "MULTIPOLYGON" && keyword != "GEOMETRYCOLLECTION")
+    const bool point_or_line = is_point_or_line_type(keyword);
+    if(!point_or_line && keyword != "POLYGON" && keyword != "MULTIPOLYGON" && keyword != "GEOMETRYCOLLECTION")
       throw Input_error("not a polygon: found " + keyword);
+    if(point_or_line)
+      m_skipped.add(keyword);
     if(depth > 64)
       error(kw_begin, "collections nested too deep");
     skip_space();
@@ -362,6 +360,10 @@ private:
         return;
       if(!tag.empty() || m_p == m_end || *m_p != '(')
         error(w, "expected '(' or 'EMPTY'");
+    }
+    if(point_or_line) {   // read and dropped
+      skip_list(0);
+      return;
     }
     if(keyword == "POLYGON") {
       read_polygon_text(dimension);
@@ -382,13 +384,8 @@ private:
           read_polygon_text(dimension);
         }
       }
-      skip_space();
-      if(m_p != m_end && *m_p == ',') {
-        ++m_p;
-        continue;
-      }
-      expect(')', "expected ',' or ')'");
-      return;
+      if(!next_in_list())
+        return;
     }
   }
 
@@ -398,27 +395,9 @@ private:
     throw Input_error("malformed WKT at " + line_column(m_begin, at) + ": " + what);
   }
 
-  // The text of a point or line geometry after its keyword, read and
-  // dropped: an optional Z, M or ZM tag, then EMPTY or a list.  A list is
-  // '(' item (',' item)* ')', an item a list, EMPTY, or a point of 2 to 4
-  // numbers.  (This covers POINT, LINESTRING and both forms of MULTIPOINT.)
-  void skip_geometry_text()
-  {
-    skip_space();
-    const char* w = m_p;
-    std::string tag = read_word();
-    if(tag == "Z" || tag == "M" || tag == "ZM") {
-      skip_space();
-      w = m_p;
-      tag = read_word();
-    }
-    if(tag == "EMPTY")
-      return;
-    if(!tag.empty())
-      error(w, "expected '(' or 'EMPTY'");
-    skip_list(0);
-  }
-
+  // The list of a point or line geometry, read and dropped: '(' item (','
+  // item)* ')', an item a list, EMPTY, or a point of 2 to 4 numbers.  (This
+  // covers POINT, LINESTRING and both forms of MULTIPOINT.)
   void skip_list(int depth)
   {
     if(depth > 3)
@@ -444,13 +423,8 @@ private:
           m_p = x.end;
         }
       }
-      skip_space();
-      if(m_p != m_end && *m_p == ',') {
-        ++m_p;
-        continue;
-      }
-      expect(')', "expected ',' or ')'");
-      return;
+      if(!next_in_list())
+        return;
     }
   }
 
@@ -498,6 +472,19 @@ private:
     ++m_p;
   }
 
+  // After an item of a list: true past a ',' (another item follows), false
+  // past the closing ')'.
+  bool next_in_list()
+  {
+    skip_space();
+    if(m_p != m_end && *m_p == ',') {
+      ++m_p;
+      return true;
+    }
+    expect(')', "expected ',' or ')'");
+    return false;
+  }
+
   void expect_end()
   {
     skip_space();
@@ -524,14 +511,10 @@ private:
           throw;
         throw Input_error(prefix + e.what(), e.ring(), e.vertex());
       }
-      skip_space();
-      if(m_p != m_end && *m_p == ',') {
-        ++m_p;
-        continue;
+      if(!next_in_list()) {
+        m_out.push_back(std::move(polygon));
+        return;
       }
-      expect(')', "expected ',' or ')'");
-      m_out.push_back(std::move(polygon));
-      return;
     }
   }
 
@@ -575,12 +558,8 @@ private:
                           (dimension == 0 ? std::string("2, 3 or 4") : std::to_string(dimension)) + " (at " +
                           line_column(m_begin, m_p) + ")",
                           static_cast<int>(ring), static_cast<int>(vertex));
-      if(m_p != m_end && *m_p == ',') {
-        ++m_p;
-        continue;
-      }
-      expect(')', "expected ',' or ')'");
-      return;
+      if(!next_in_list())
+        return;
     }
   }
 
