@@ -965,10 +965,18 @@ private:
       // the SDG's exact predicate (as in its protected is_degenerate_edge(Face_handle, int))
       const SDG::Face_handle fh = e->first;
       const int i = e->second;
+      // Where the two faces have the same three sites (the mirror vertex is
+      // fh's own vertex i: a point between two segments, with its two
+      // tangent circles), the predicate asks whether that site touches the
+      // other face's circle, which it always does: it says "degenerate"
+      // for two distinct vertices.  There the coordinates decide, as for
+      // any other edge (a quadrilateral with a triangular hole cut from
+      // land-10m, data/regressions/l10m_USA_point_between_two_segments.wkt).
       const SDG::Vertex_handle mirror = sdg.data_structure().mirror_vertex(fh, i);
-      const bool sdg_degenerate = sdg.geom_traits().is_degenerate_edge_2_object()(
-        fh->vertex(SDG::ccw(i))->site(), fh->vertex(SDG::cw(i))->site(), fh->vertex(i)->site(),
-        mirror->site());
+      const bool sdg_degenerate = mirror != fh->vertex(i) &&
+        sdg.geom_traits().is_degenerate_edge_2_object()(
+          fh->vertex(SDG::ccw(i))->site(), fh->vertex(SDG::cw(i))->site(), fh->vertex(i)->site(),
+          mirror->site());
       // the correctly rounded vertices of two equal vertices are equal; farther apart than
       // this, the vertices certainly differ
       const double tol = 1e-9 * (std::max)(scale_of(f), scale_of(g));
