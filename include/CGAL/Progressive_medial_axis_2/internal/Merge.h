@@ -74,6 +74,7 @@
 #include <CGAL/enum.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstddef>
 #include <type_traits>
 #include <utility>
@@ -622,61 +623,75 @@ private:
     stats_.max_queue = (std::max)(stats_.max_queue, live_events_);
   }
 
-  // Whether the vanishing of node n is a disk that its open edge with a
-  // generator G, which L holds twice, cannot reach (`twice`, from
-  // twice_around(n), says on which side of n G is).  In a merge that closes
-  // a ring around a hole, the cell of one generator G can touch the
-  // separator from both sides (a small hole near a long edge G: G's cell
-  // wraps around the hole's cells), and L then holds G twice: [G X Y G].
-  // The vanishing times of X (between G and Y) and of Y (between X and G)
-  // are then the same disk, tangent to G on one side of the hole only.  The
-  // open edge between G and a point X is a parabola, of which two arms are
-  // in play; only the vanishing on the arm where that edge is can happen.
-  // Taking the other, the merge went on with L in an order that no later
-  // event could undo (RESULTS.md, "A merge anomaly on real data",
-  // thirty-first session).  The arms are told apart by the side, along the
-  // segment's line, of the point's foot: the feet of the disk's centre and
-  // of the edge's start vertex are on opposite sides of it.  The traits
-  // decide the three feet and their order exactly (the feet of disks are
-  // the switch times of the merge, along the segment instead of the
-  // separator); where a foot is the point's own, the arm is not clear and
-  // the candidate stays.
+  // Whether the vanishing of node n is the wrong one of the two that a
+  // generator G, which L holds on both sides of n and its neighbour, makes
+  // (`twice`, from twice_around(n), says on which side of n G is).  In a
+  // merge that closes a ring around a hole, the cell of one generator G can
+  // touch the tip's cell on both sides of the hole (a small hole near a long
+  // edge G: G's cell wraps around the hole's cells), and L then holds G
+  // twice: [G X Y G].  The vanishing of X (the triple G X Y) and that of Y
+  // (X Y G) are then one cyclic order of the same three generators: the
+  // same disk D, at the same time, and only one of them can happen.  Taking
+  // the other, the merge goes on with L in an order that no later event
+  // undoes, silently or with anomalies (RESULTS.md: "A merge anomaly on real
+  // data", thirty-first session; "Region growing's wrong axis mended",
+  // forty-eighth session).
+  //
+  // The rule.  At the time of a vanishing of n between a and c, the tip of
+  // the separator is on the circle of D, in the arc from c to a
+  // (counter-clockwise): the cells around the new vertex are a, n, c and the
+  // tip's.  D touches G at one point f; counter-clockwise from f the circle
+  // runs along G's direction (the shape is on G's left).  So X vanishes when
+  // the tip is before f (its foot on G's line is smaller than f's), Y when it
+  // is after f.
+  //
+  // Where G is a segment and the one of X, Y that would be left between the
+  // two G's is the point at an end of G, this is decided exactly, without
+  // numbers: a disk tangent to G and through its end Y touches G at Y, so
+  // every edge between the cells of Y and G is a piece of G's normal at Y;
+  // the disks centred along that normal are nested, so it is one edge, and Y
+  // cannot have G on both sides.  Elsewhere the tip's side of f is computed
+  // in doubles from the disk's centre and radius (the traits' construction)
+  // and decides only with a clear margin; else both candidates stay.
   CGAL_PMA2_NOINLINE bool on_other_arm(int n, int twice) const
   {
     const int a = nodes_[n].prev, c = nodes_[n].next;
-    const int fa = nodes_[a].face, fc = nodes_[c].face;
-    // [G X Y G]: n = X and the edge G|X, or n = Y and the edge Y|G
-    const int edge = twice == G_BEFORE ? nodes_[a].right_he : nodes_[n].right_he;
+    const int fa = nodes_[a].face, fb = nodes_[n].face, fc = nodes_[c].face;
     const int G = twice == G_BEFORE ? fa : fc;
-    const Hds_face &g = chds().face(G), &x = chds().face(nodes_[n].face);
-    if(g.is_point == x.is_point)
-      return false;                // (a line or a point bisector: no arms)
-    const Hds_face& point = g.is_point ? g : x;
-    const Hds_face& segment = g.is_point ? x : g;
-    if(point.p0 == segment.p0 || point.p0 == segment.p1)
-      return false;                // (the normal at an end of the segment)
-    const Site_2 line = Site_2::segment(points_[segment.p0], points_[segment.p1]);
-    Time at_centre, at_start;
-    if(!traits_.compute_disk_foot_time_2_object()(line, site(fa), site(nodes_[n].face), site(fc), at_centre))
+    if(end_point_between(G, twice == G_BEFORE ? fc : fa))
+      return true;
+    const Hds_face& g = chds().face(G);
+    if(g.is_point)
       return false;
-    foot_time_of_vertex(line, hds_.source(edge), at_start);
-    const Time at_point = traits_.compute_foot_time_2_object()(line, points_[point.p0]);
-    const Comparison_result centre = compare_(at_centre, at_point), start = compare_(at_start, at_point);
-    return centre != EQUAL && start != EQUAL && centre != start;
+    Point_2 centre;
+    FT radius;
+    if(!traits_.construct_medial_disk_2_object()(site(fa), site(fb), site(fc), centre, radius))
+      return false;
+    const double cx = CGAL::to_double(centre.x()), cy = CGAL::to_double(centre.y()), r = CGAL::to_double(radius);
+    const Point_2 &P = points_[P_], &Q = points_[Q_], &g0 = points_[g.p0], &g1 = points_[g.p1];
+    const double px = CGAL::to_double(P.x()), py = CGAL::to_double(P.y());
+    double ux = CGAL::to_double(Q.x()) - px, uy = CGAL::to_double(Q.y()) - py;
+    double gx = CGAL::to_double(g1.x()) - CGAL::to_double(g0.x()), gy = CGAL::to_double(g1.y()) - CGAL::to_double(g0.y());
+    const double lu = std::sqrt(ux * ux + uy * uy), lg = std::sqrt(gx * gx + gy * gy);
+    if(!(lu > 0 && lg > 0 && r > 0))
+      return false;
+    ux /= lu; uy /= lu; gx /= lg; gy /= lg;
+    // the tip: where the separator's line leaves the disk
+    const double wx = cx - px, wy = cy - py;
+    const double m = wx * ux + wy * uy;
+    const double h2 = r * r - (wx * wx + wy * wy - m * m);
+    const double s = m + std::sqrt((std::max)(h2, 0.0));
+    const double side = (px + s * ux - cx) * gx + (py + s * uy - cy) * gy;   // the tip's foot on G, from f's
+    // (the tip's error grows like sqrt(h2)'s where the line nearly touches the disk)
+    const double margin = 1e-6 * (r + std::sqrt(wx * wx + wy * wy)) + 1e-12 * (std::abs(cx) + std::abs(cy));
+    return twice == G_BEFORE ? side > margin : side < -margin;
   }
 
-  // The time along `line` of the foot of vertex v: of the disk of its
-  // generators where it has them, exact, or else of its point.
-  void foot_time_of_vertex(const Site_2& line, int v, Time& t) const
+  // Whether face y is the point at an end of the segment of face g.
+  bool end_point_between(int g, int y) const
   {
-    if(!chds().vertex(v).is_corner()) {
-      const typename Hds::Disk& x = chds().disk(v);
-      if(x.triple[0][0] != NO_INDEX &&
-         traits_.compute_disk_foot_time_2_object()(line, triple_site(x.triple[0]), triple_site(x.triple[1]),
-                                                   triple_site(x.triple[2]), t))
-        return;
-    }
-    t = traits_.compute_foot_time_2_object()(line, vertex_point(v));
+    const Hds_face &G = chds().face(g), &Y = chds().face(y);
+    return !G.is_point && Y.is_point && (Y.p0 == G.p0 || Y.p0 == G.p1);
   }
 
   // Where L holds one generator G on both sides of node n and its
