@@ -320,6 +320,36 @@ void curves()
   }
 }
 
+// shape_rings() splices a lobe (a counter-clockwise cycle: a part of the
+// interior that meets the rest at one place) into the ring it touches, as an
+// input ring that touches itself: into the outer ring, and, where it touches
+// only a hole, into that hole (an island in a hole, forty-eighth session;
+// before, it was written as a hole inside the hole).
+void lobes()
+{
+  // places: the outer square 0-3, a clockwise hole 4-7, and an island 8-10
+  // inside the hole, whose vertex 8 is at the place of the hole's vertex 6;
+  // a lobe 11-13 of the outer ring at the place of its vertex 1
+  const double xy[14][2] = {{0, 0}, {10, 0}, {10, 10}, {0, 10}, {2, 2}, {2, 8}, {5, 8}, {8, 2},
+                            {5, 8}, {4, 6}, {6, 6}, {10, 0}, {12, -1}, {12, 1}};
+  auto same_place = [&](int u, int v) { return xy[u][0] == xy[v][0] && xy[u][1] == xy[v][1]; };
+  auto ccw = [&](const std::vector<int>& c) {
+    double a = 0;
+    for(std::size_t i = 0; i < c.size(); ++i) {
+      const double* p = xy[c[i]];
+      const double* q = xy[c[(i + 1) % c.size()]];
+      a += p[0] * q[1] - p[1] * q[0];
+    }
+    return a > 0;
+  };
+  std::vector<std::vector<int> > cycles = {{0, 1, 2, 3}, {4, 5, 6, 7}, {8, 9, 10}, {11, 12, 13}};
+  CHECK(ccw(cycles[0]) && !ccw(cycles[1]) && ccw(cycles[2]) && ccw(cycles[3]), "the test's orientations");
+  CGAL::Progressive_medial_axes::internal::splice_lobes(cycles, same_place, ccw);
+  const std::vector<std::vector<int> > expected = {{0, 11, 12, 13, 1, 2, 3}, {4, 5, 8, 9, 10, 6, 7}};
+  CHECK(cycles == expected, "lobes spliced into the outer ring and into the hole they touch ("
+                                << cycles.size() << " cycles)");
+}
+
 // The progressive object: steps, current_shape() with its holes at every
 // step, release.
 void progressive(const std::string& tool, const std::string& data)
@@ -559,6 +589,7 @@ int main(int argc, char** argv)
   generators_counter_clockwise();
   degree_four();
   curves();
+  lobes();
   progressive(argc > 2 ? argv[1] : "", argc > 2 ? argv[2] : "");
   accuracy();
   bad_input();

@@ -743,7 +743,8 @@ inline Rings t_touch_grid(int seed)
 // units) with diamond holes in the cells of a lattice of spacing 4, which touch
 // each other and the shell at vertices.  (Known limitation: where holes alone
 // enclose a part of the interior, the shape of a progressive step is not one
-// polygon, and shape_rings() gives that part as a hole.)
+// polygon; shape_rings() splices that part, as a lobe, into the first hole
+// it touches, which makes a hole ring that touches other holes.)
 template <class Traits>
 void touching_tests(Checker<Traits>& checker, const Options& o)
 {

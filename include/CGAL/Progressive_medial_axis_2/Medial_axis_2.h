@@ -205,8 +205,13 @@ struct Medial_axis_access {
 // spliced into it there, so that the outer ring passes that place twice, as
 // a pinched input ring does: the ring enters the place from the outer
 // cycle's previous vertex and leaves along the lobe, so that each edge starts
-// at the corner that is its source.  `same_place(u, v)` tells whether two
-// cycle vertices are one place, `counterclockwise(c)` a cycle's orientation.
+// at the corner that is its source.  A lobe that touches no outer cycle is
+// an island in a hole that touches the hole's ring (the "inverted island"
+// of a hole ring that touches itself, which region growing can reach before
+// it fills the hole's surroundings): it is spliced into the first hole it
+// touches, the same way.  Written as a hole of its own, it was a hole inside
+// a hole (forty-eighth session).  `same_place(u, v)` tells whether two cycle
+// vertices are one place, `counterclockwise(c)` a cycle's orientation.
 template <class Same_place, class Counterclockwise>
 void splice_lobes(std::vector<std::vector<int> >& cycles, const Same_place& same_place,
                   const Counterclockwise& counterclockwise)
@@ -216,19 +221,23 @@ void splice_lobes(std::vector<std::vector<int> >& cycles, const Same_place& same
     spliced = false;
     for(std::size_t i = 1; i < cycles.size() && !spliced; ++i) {
       if(!counterclockwise(cycles[i])) continue;
-      std::vector<int>& o = cycles[0];
-      const std::vector<int>& l = cycles[i];
-      for(std::size_t a = 0; a < o.size() && !spliced; ++a)
-        for(std::size_t b = 0; b < l.size() && !spliced; ++b) {
-          if(!same_place(o[a], l[b])) continue;
-          // o[0..a-1], the lobe from l[b] round to l[b-1], then o[a..]
-          std::vector<int> joined(o.begin(), o.begin() + std::ptrdiff_t(a));
-          for(std::size_t k = 0; k < l.size(); ++k) joined.push_back(l[(b + k) % l.size()]);
-          joined.insert(joined.end(), o.begin() + std::ptrdiff_t(a), o.end());
-          o.swap(joined);
-          cycles.erase(cycles.begin() + std::ptrdiff_t(i));
-          spliced = true;
-        }
+      // into the outer cycle, else into the first hole it touches
+      for(std::size_t j = 0; j < cycles.size() && !spliced; ++j) {
+        if(j == i || (j > 0 && counterclockwise(cycles[j]))) continue;
+        std::vector<int>& o = cycles[j];
+        const std::vector<int>& l = cycles[i];
+        for(std::size_t a = 0; a < o.size() && !spliced; ++a)
+          for(std::size_t b = 0; b < l.size() && !spliced; ++b) {
+            if(!same_place(o[a], l[b])) continue;
+            // o[0..a-1], the lobe from l[b] round to l[b-1], then o[a..]
+            std::vector<int> joined(o.begin(), o.begin() + std::ptrdiff_t(a));
+            for(std::size_t k = 0; k < l.size(); ++k) joined.push_back(l[(b + k) % l.size()]);
+            joined.insert(joined.end(), o.begin() + std::ptrdiff_t(a), o.end());
+            o.swap(joined);
+            cycles.erase(cycles.begin() + std::ptrdiff_t(i));
+            spliced = true;
+          }
+      }
     }
   }
 }
