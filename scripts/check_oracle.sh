@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Compares the tool's --pairs with the oracle program sdg_pairs on polygon
-# files, for the full shape and at several --step values (fractions of the
-# step count).  Usage: scripts/check_oracle.sh [--traits T] [--progressive D] FILE.wkt...
+# files, for the full shape (the plain run, and for region growing also its
+# last step) and at several --step values (fractions of the step count).  Usage: scripts/check_oracle.sh [--traits T] [--progressive D] FILE.wkt...
 # (--progressive boundary: the steps, and the full run, of boundary evolution)
 # Needs a build with tests (scripts/test.sh, or cmake --build build).
 set -uo pipefail
@@ -26,10 +26,15 @@ for f in "$@"; do
   # of 0 or 1 steps has only its full run)
   ks=$(for k in 1 10 $((steps/10)) $((steps/3)) $((2*steps/3)) $((steps-1)); do
          [ "$k" -ge 1 ] && [ "$k" -lt "$steps" ] && echo "$k"; done | sort -nu)
-  for k in full $ks; do
+  # (full: the tool's plain run, which for region is the one-shot; last:
+  # the driver's own last step, the axis of the whole shape again)
+  last=""; [ $driver = region ] && [ "$steps" -ge 1 ] && last=last
+  for k in full $last $ks; do
     if [ "$k" = full ]; then
       progressive=""; [ $driver = region ] || progressive="--progressive $driver"
       $tool --traits $traits --pairs $progressive "$f" > $tmp/ours.txt; shape=$f
+    elif [ "$k" = last ]; then
+      $tool --traits $traits --pairs --progressive $driver "$f" > $tmp/ours.txt; shape=$f
     else
       $tool --traits $traits --pairs --progressive $driver --step $k --shape-out $tmp/shape.wkt "$f" > $tmp/ours.txt; shape=$tmp/shape.wkt
     fi
