@@ -606,7 +606,7 @@ private:
       events_.pop_back();
       return;
     }
-    if(const int twice = twice_around(n); twice != 0 && on_other_arm(n, twice)) {
+    if(const int twice = twice_around(n); twice != 0 && tip_excludes(n, twice)) {
       events_.pop_back();
       return;
     }
@@ -653,7 +653,7 @@ private:
   // cannot have G on both sides.  Elsewhere the tip's side of f is computed
   // in doubles from the disk's centre and radius (the traits' construction)
   // and decides only with a clear margin; else both candidates stay.
-  CGAL_PMA2_NOINLINE bool on_other_arm(int n, int twice) const
+  CGAL_PMA2_NOINLINE bool tip_excludes(int n, int twice) const
   {
     const int a = nodes_[n].prev, c = nodes_[n].next;
     const int fa = nodes_[a].face, fb = nodes_[n].face, fc = nodes_[c].face;
@@ -709,15 +709,15 @@ private:
   }
 
   // Drops the vanishing of node m where a change two nodes away made L hold
-  // its neighbour's generator twice around it (see on_other_arm()).
-  CGAL_PMA2_ALWAYS_INLINE void recheck_arm(int m)
+  // its neighbour's generator twice around it (see tip_excludes()).
+  CGAL_PMA2_ALWAYS_INLINE void recheck_twice(int m)
   {
     if(m <= 1)
       return;   // (C+ or C-)
     const int ev = nodes_[m].event;
     if(ev == NO_INDEX || !events_[ev].valid)
       return;
-    if(const int twice = twice_around(m); twice != 0 && on_other_arm(m, twice))
+    if(const int twice = twice_around(m); twice != 0 && tip_excludes(m, twice))
       invalidate(m);
   }
 
@@ -812,7 +812,7 @@ private:
     hds_.vertex(s.vertex).halfedge = Hds::twin(h);
     nodes_[n].right_he = h;
     update_candidate(first);
-    recheck_arm(nodes_[first].next);
+    recheck_twice(nodes_[first].next);
   }
 
   // Algorithm 1 on the C- side: gold leaves Phi(C-), gnew enters L before C-.
@@ -830,7 +830,7 @@ private:
     nodes_[last].right_he = h;
     nodes_[last].opened = now_index();
     update_candidate(last);
-    recheck_arm(nodes_[last].prev);
+    recheck_twice(nodes_[last].prev);
   }
 
   // Algorithm 2: the generator of node n leaves L at a new branch point
@@ -865,8 +865,8 @@ private:
     CGAL_assertion(nodes_[a].face != nodes_[c].face);
     update_candidate(a);
     update_candidate(c);
-    recheck_arm(nodes_[a].prev);
-    recheck_arm(nodes_[c].next);
+    recheck_twice(nodes_[a].prev);
+    recheck_twice(nodes_[c].next);
   }
 
   // ---- termination at Q (Algorithm 4) ----
