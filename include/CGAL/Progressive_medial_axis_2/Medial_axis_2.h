@@ -216,18 +216,23 @@ template <class Same_place, class Counterclockwise>
 void splice_lobes(std::vector<std::vector<int> >& cycles, const Same_place& same_place,
                   const Counterclockwise& counterclockwise)
 {
+  // (each cycle's orientation once: splicing a lobe into a cycle leaves it
+  // the outer cycle or a hole)
+  std::vector<char> lobe(cycles.size(), 0);
+  for(std::size_t i = 1; i < cycles.size(); ++i) lobe[i] = counterclockwise(cycles[i]);
   bool spliced = true;
   while(spliced && cycles.size() > 1) {
     spliced = false;
     for(std::size_t i = 1; i < cycles.size() && !spliced; ++i) {
-      if(!counterclockwise(cycles[i])) continue;
+      if(!lobe[i]) continue;
       // into the outer cycle, else into the first hole it touches
       for(std::size_t j = 0; j < cycles.size() && !spliced; ++j) {
-        if(j == i || (j > 0 && counterclockwise(cycles[j]))) continue;
+        if(j == i || lobe[j]) continue;
         std::vector<int>& o = cycles[j];
         const std::vector<int>& l = cycles[i];
-        for(std::size_t a = 0; a < o.size() && !spliced; ++a)
-          for(std::size_t b = 0; b < l.size() && !spliced; ++b) {
+        // (!spliced first: after the erase below, o and l may refer past the end)
+        for(std::size_t a = 0; !spliced && a < o.size(); ++a)
+          for(std::size_t b = 0; !spliced && b < l.size(); ++b) {
             if(!same_place(o[a], l[b])) continue;
             // o[0..a-1], the lobe from l[b] round to l[b-1], then o[a..]
             std::vector<int> joined(o.begin(), o.begin() + std::ptrdiff_t(a));
@@ -235,6 +240,7 @@ void splice_lobes(std::vector<std::vector<int> >& cycles, const Same_place& same
             joined.insert(joined.end(), o.begin() + std::ptrdiff_t(a), o.end());
             o.swap(joined);
             cycles.erase(cycles.begin() + std::ptrdiff_t(i));
+            lobe.erase(lobe.begin() + std::ptrdiff_t(i));
             spliced = true;
           }
       }
