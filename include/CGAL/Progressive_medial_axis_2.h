@@ -59,6 +59,7 @@ inline void copy_counts(Progressive_medial_axis_statistics& s, const Divide_and_
   s.switches = c.switches;
   s.vanishings = c.vanishings;
   s.anomalies = c.anomalies;
+  s.undecided_ties = c.undecided_ties;
   s.redone_merges = c.redone_merges;
   s.max_queue = c.max_queue;
 }
@@ -308,6 +309,7 @@ private:
     {
       ++stats.merges;
       stats.anomalies += m.anomalies;
+      stats.undecided_ties += m.undecided_ties;
       stats.redone_merges += m.redone_exactly ? 1 : 0;
       visitor.on_merge(m);
     }

@@ -377,6 +377,7 @@ bool run_polygon(Checker<Traits>& checker, const Rings& rings, const std::string
     checker.compare(pma, true, what, rings);
   // exact decisions never force an event; the double model redoes such merges
   CHECK(pma.statistics().anomalies == 0, what << ": " << pma.statistics().anomalies << " forced events");
+  CHECK(pma.statistics().undecided_ties == 0, what << ": " << pma.statistics().undecided_ties << " undecided ties");
   // the one-shot divide and conquer, cut into 1 to 9, 16 or 25 parts (with
   // region growing; many parts as the default gives large polygons: each
   // moved into the result while others are built)
@@ -404,6 +405,7 @@ bool run_polygon(Checker<Traits>& checker, const Rings& rings, const std::string
                       (probe_limit ? ", probed " + std::to_string(probe_limit) + " triangles a part" : ""),
                     true, what, rings);
     CHECK(stats.anomalies == 0, what << ": " << stats.anomalies << " forced events in the one-shot");
+    CHECK(stats.undecided_ties == 0, what << ": " << stats.undecided_ties << " undecided ties in the one-shot");
     CHECK(stats.region_growing_one_shots == 0, what << ": the one-shot met an anomaly and was computed again by region growing");
     g_split_one_shots += stats.split_triangulations;
     // (the last parts cut smaller: several times the parts asked for)

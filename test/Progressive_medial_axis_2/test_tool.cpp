@@ -245,6 +245,7 @@ void outputs(const std::string& data)
     while(in >> key >> value) v[key] = std::strtod(value.c_str(), nullptr);
     CHECK(t.status == 0 && v.count("dc_parts") && v.count("time_work") && v.count("time_span") &&
             v.count("time_parts_sum") && v.count("time_parts_max") && v.count("time_parts_join") && v["dc_parts"] >= 1 &&
+            v.count("undecided_ties") && v["undecided_ties"] == 0 &&
             v["time_span"] <= v["time_work"] && v["time_parts_max"] <= v["time_parts_sum"],
           "--stats task tree: " << t.out);
   }

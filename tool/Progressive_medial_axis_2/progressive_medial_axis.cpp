@@ -451,6 +451,7 @@ void add_statistics(CGAL::Progressive_medial_axis_statistics& s, const CGAL::Pro
   s.switches += t.switches;
   s.vanishings += t.vanishings;
   s.anomalies += t.anomalies;
+  s.undecided_ties += t.undecided_ties;
   s.redone_merges += t.redone_merges;
   s.max_queue = std::max(s.max_queue, t.max_queue);
   s.parts += t.parts;
@@ -957,6 +958,11 @@ int run(const Options& o)
     if(anomalies != 0)
       std::cerr << "progressive_medial_axis: warning: " << anomalies
                 << " merge anomalies: the axis may be wrong near them (please report the input)\n";
+    std::size_t undecided = 0;
+    for(const Job& job : jobs) undecided += job.stats.undecided_ties;
+    if(undecided != 0)
+      std::cerr << "progressive_medial_axis: warning: " << undecided
+                << " ties of two vanishings left undecided: the axis may be wrong near them (please report the input)\n";
   }
   // significance, pruning and centerlines after the axes: time_total ends at
   // the final axis, they have time_prune of their own
@@ -1100,7 +1106,7 @@ int run(const Options& o)
                 read_seconds, s.validation_seconds, s.triangulation_seconds, s.merge_seconds);
     std::printf("switch_events %zu\nvanishing_events %zu\nanomalies %zu\nmax_n_v %zu\n",
                 s.switches, s.vanishings, s.anomalies, s.max_queue);
-    std::printf("redone_merges %zu\n", s.redone_merges);
+    std::printf("redone_merges %zu\nundecided_ties %zu\n", s.redone_merges, s.undecided_ties);
     if(progressive) std::printf("time_first_step %.6f\n", s.first_step_seconds);
     if(boundary)
       std::printf("time_evolution %.6f\ncut_steps %zu\nsplit_steps %zu\nrecomputed_steps %zu\n", s.evolution_seconds,

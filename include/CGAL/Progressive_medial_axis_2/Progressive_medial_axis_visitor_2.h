@@ -42,6 +42,7 @@ struct Progressive_medial_axis_statistics {
   std::size_t switches = 0;        ///< switch critical points traversed
   std::size_t vanishings = 0;      ///< vanishing critical points traversed
   std::size_t anomalies = 0;       ///< events forced to keep the topology valid (0: exact decisions never force one, and the double model redoes such merges)
+  std::size_t undecided_ties = 0;  ///< ties between two vanishings of one disk that the merge could not decide, and took the one computed first (see `Merge_statistics::undecided_ties`; 0 on every shape tried)
   std::size_t redone_merges = 0;   ///< merges of the double model redone with exact decisions: after an anomaly, or a decision within its estimated rounding error
   std::size_t max_queue = 0;       ///< n_v: the largest priority queue of any merge
   // The task tree of a one-shot divide and conquer (`CGAL::medial_axis_2()`):

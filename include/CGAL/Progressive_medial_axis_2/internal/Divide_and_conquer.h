@@ -135,7 +135,7 @@ struct Thread_counters<Traits, std::void_t<decltype(Traits::filter_statistics())
 
 /// Counts of the merges of a divide and conquer (or of a part of it).
 struct Divide_and_conquer_counts {
-  std::size_t merges = 0, switches = 0, vanishings = 0, anomalies = 0, redone_merges = 0, max_queue = 0;
+  std::size_t merges = 0, switches = 0, vanishings = 0, anomalies = 0, undecided_ties = 0, redone_merges = 0, max_queue = 0;
   // the task tree: the parts' tasks (summed, longest) and the sequential join
   std::size_t parts = 0;
   double parts_seconds_sum = 0, parts_seconds_max = 0, join_seconds = 0;
@@ -145,6 +145,7 @@ struct Divide_and_conquer_counts {
     switches += o.switches;
     vanishings += o.vanishings;
     anomalies += o.anomalies;
+    undecided_ties += o.undecided_ties;
     redone_merges += o.redone_merges;
     max_queue = (std::max)(max_queue, o.max_queue);
   }
@@ -152,6 +153,7 @@ struct Divide_and_conquer_counts {
   {
     ++merges;
     anomalies += m.anomalies;
+    undecided_ties += m.undecided_ties;
     redone_merges += m.redone_exactly ? 1 : 0;
     max_queue = (std::max)(max_queue, m.max_queue);
   }

@@ -652,8 +652,10 @@ private:
   // the disks centred along that normal are nested, so it is one edge, and Y
   // cannot have G on both sides.  Elsewhere the tip's side of f is computed
   // in doubles from the disk's centre and radius (the traits' construction)
-  // and decides only with a clear margin; else both candidates stay.
-  CGAL_PMA2_NOINLINE bool tip_excludes(int n, int twice) const
+  // and decides only with a clear margin; else both candidates stay, the
+  // one computed first is taken, and `undecided_ties` counts it (as where G
+  // is a point, for which no rule is written: no shape tried has met either).
+  CGAL_PMA2_NOINLINE bool tip_excludes(int n, int twice)
   {
     const int a = nodes_[n].prev, c = nodes_[n].next;
     const int fa = nodes_[a].face, fb = nodes_[n].face, fc = nodes_[c].face;
@@ -661,20 +663,22 @@ private:
     if(end_point_between(G, twice == G_BEFORE ? fc : fa))
       return true;
     const Hds_face& g = chds().face(G);
-    if(g.is_point)
-      return false;
     Point_2 centre;
     FT radius;
-    if(!traits_.construct_medial_disk_2_object()(site(fa), site(fb), site(fc), centre, radius))
+    if(g.is_point || !traits_.construct_medial_disk_2_object()(site(fa), site(fb), site(fc), centre, radius)) {
+      ++stats_.undecided_ties;
       return false;
+    }
     const double cx = CGAL::to_double(centre.x()), cy = CGAL::to_double(centre.y()), r = CGAL::to_double(radius);
     const Point_2 &P = points_[P_], &Q = points_[Q_], &g0 = points_[g.p0], &g1 = points_[g.p1];
     const double px = CGAL::to_double(P.x()), py = CGAL::to_double(P.y());
     double ux = CGAL::to_double(Q.x()) - px, uy = CGAL::to_double(Q.y()) - py;
     double gx = CGAL::to_double(g1.x()) - CGAL::to_double(g0.x()), gy = CGAL::to_double(g1.y()) - CGAL::to_double(g0.y());
     const double lu = std::sqrt(ux * ux + uy * uy), lg = std::sqrt(gx * gx + gy * gy);
-    if(!(lu > 0 && lg > 0 && r > 0))
+    if(!(lu > 0 && lg > 0 && r > 0)) {
+      ++stats_.undecided_ties;
       return false;
+    }
     ux /= lu; uy /= lu; gx /= lg; gy /= lg;
     // the tip: where the separator's line leaves the disk
     const double wx = cx - px, wy = cy - py;
@@ -684,7 +688,11 @@ private:
     const double side = (px + s * ux - cx) * gx + (py + s * uy - cy) * gy;   // the tip's foot on G, from f's
     // (the tip's error grows like sqrt(h2)'s where the line nearly touches the disk)
     const double margin = 1e-6 * (r + std::sqrt(wx * wx + wy * wy)) + 1e-12 * (std::abs(cx) + std::abs(cy));
-    return twice == G_BEFORE ? side > margin : side < -margin;
+    if(!(std::abs(side) > margin)) {
+      ++stats_.undecided_ties;
+      return false;
+    }
+    return twice == G_BEFORE ? side > 0 : side < 0;
   }
 
   // Whether face y is the point at an end of the segment of face g.
