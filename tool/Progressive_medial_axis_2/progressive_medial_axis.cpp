@@ -853,6 +853,7 @@ int run(const Options& o)
     add_statistics(job.stats, sb);
     job.stats.switches += union_stats.switches;
     job.stats.vanishings += union_stats.vanishings;
+    job.stats.anomalies += union_stats.anomalies;
     job.stats.undecided_ties += union_stats.undecided_ties;
     job.stats.validation_seconds = 0;   // (counted in time_read with the reading)
     job.ma = &job.one_shot;

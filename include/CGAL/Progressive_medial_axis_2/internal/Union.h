@@ -87,6 +87,7 @@ struct Medial_axis_union_statistics {
   std::size_t chains = 0;         ///< maximal chains of shared edges
   std::size_t switches = 0;       ///< switch points of the merges
   std::size_t vanishings = 0;     ///< vanishing points of the merges
+  std::size_t anomalies = 0;      ///< events the merges forced to keep the topology valid (a bug, as in `Merge_statistics::anomalies`: the axis may be wrong near them; 0 on every shape tried)
   std::size_t undecided_ties = 0; ///< ties of two vanishings that the merges left undecided (see `Merge_statistics::undecided_ties`; 0 on every shape tried)
   double join_seconds = 0;        ///< finding the shared chains, the union's rings and its validation, copying the two structures
   double merge_seconds = 0;       ///< the merges alone
@@ -145,6 +146,7 @@ public:
         const Merge_statistics s = engine.merge(boundary_[0][std::size_t(k)], boundary_[1][std::size_t(shared_[0][std::size_t(k)])] + offset_, visitor);
         stats.switches += s.switches;
         stats.vanishings += s.vanishings;
+        stats.anomalies += s.anomalies;
         stats.undecided_ties += s.undecided_ties;
       }
     }
