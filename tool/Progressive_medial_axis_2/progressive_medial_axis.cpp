@@ -954,14 +954,15 @@ int run(const Options& o)
   const double total_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   {
     // (a one-shot that meets an anomaly computes the axis again by region
-    // growing; a progressive run cannot, and says so)
-    std::size_t anomalies = 0;
-    for(const Job& job : jobs) anomalies += job.stats.anomalies;
+    // growing; a progressive run and a union cannot, and say so)
+    std::size_t anomalies = 0, undecided = 0;
+    for(const Job& job : jobs) {
+      anomalies += job.stats.anomalies;
+      undecided += job.stats.undecided_ties;
+    }
     if(anomalies != 0)
       std::cerr << "progressive_medial_axis: warning: " << anomalies
                 << " merge anomalies: the axis may be wrong near them (please report the input)\n";
-    std::size_t undecided = 0;
-    for(const Job& job : jobs) undecided += job.stats.undecided_ties;
     if(undecided != 0)
       std::cerr << "progressive_medial_axis: warning: " << undecided
                 << " ties of two vanishings left undecided: the axis may be wrong near them (please report the input)\n";

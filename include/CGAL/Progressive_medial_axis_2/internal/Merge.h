@@ -662,23 +662,24 @@ private:
     const int G = twice == G_BEFORE ? fa : fc;
     if(end_point_between(G, twice == G_BEFORE ? fc : fa))
       return true;
+    // (both candidates stay)
+    auto undecided = [this] {
+      ++stats_.undecided_ties;
+      return false;
+    };
     const Hds_face& g = chds().face(G);
     Point_2 centre;
     FT radius;
-    if(g.is_point || !traits_.construct_medial_disk_2_object()(site(fa), site(fb), site(fc), centre, radius)) {
-      ++stats_.undecided_ties;
-      return false;
-    }
+    if(g.is_point || !traits_.construct_medial_disk_2_object()(site(fa), site(fb), site(fc), centre, radius))
+      return undecided();
     const double cx = CGAL::to_double(centre.x()), cy = CGAL::to_double(centre.y()), r = CGAL::to_double(radius);
     const Point_2 &P = points_[P_], &Q = points_[Q_], &g0 = points_[g.p0], &g1 = points_[g.p1];
     const double px = CGAL::to_double(P.x()), py = CGAL::to_double(P.y());
     double ux = CGAL::to_double(Q.x()) - px, uy = CGAL::to_double(Q.y()) - py;
     double gx = CGAL::to_double(g1.x()) - CGAL::to_double(g0.x()), gy = CGAL::to_double(g1.y()) - CGAL::to_double(g0.y());
     const double lu = std::sqrt(ux * ux + uy * uy), lg = std::sqrt(gx * gx + gy * gy);
-    if(!(lu > 0 && lg > 0 && r > 0)) {
-      ++stats_.undecided_ties;
-      return false;
-    }
+    if(!(lu > 0 && lg > 0 && r > 0))
+      return undecided();
     ux /= lu; uy /= lu; gx /= lg; gy /= lg;
     // the tip: where the separator's line leaves the disk
     const double wx = cx - px, wy = cy - py;
@@ -688,10 +689,8 @@ private:
     const double side = (px + s * ux - cx) * gx + (py + s * uy - cy) * gy;   // the tip's foot on G, from f's
     // (the tip's error grows like sqrt(h2)'s where the line nearly touches the disk)
     const double margin = 1e-6 * (r + std::sqrt(wx * wx + wy * wy)) + 1e-12 * (std::abs(cx) + std::abs(cy));
-    if(!(std::abs(side) > margin)) {
-      ++stats_.undecided_ties;
-      return false;
-    }
+    if(!(std::abs(side) > margin))
+      return undecided();
     return twice == G_BEFORE ? side > 0 : side < 0;
   }
 
