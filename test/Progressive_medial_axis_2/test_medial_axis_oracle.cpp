@@ -1010,8 +1010,9 @@ void union_tests(Checker<Traits>& checker, const Options& o)
     }
     const auto pa = pairs(a), pb = pairs(b);
     MA u;
+    CGAL::Progressive_medial_axes::Medial_axis_union_statistics stats;
     try {
-      u = seed % 2 ? CGAL::medial_axis_union_2(b, a, Traits()) : CGAL::medial_axis_union_2(a, b, Traits());
+      u = seed % 2 ? CGAL::medial_axis_union_2(b, a, Traits(), &stats) : CGAL::medial_axis_union_2(a, b, Traits(), &stats);
     } catch(const CGAL::Progressive_medial_axes::Input_error& e) {
       CHECK(false, name << ": " << e.what() << "\n  a: " << wkt(s.a) << "\n  b: " << wkt(s.b));
       continue;
@@ -1023,6 +1024,30 @@ void union_tests(Checker<Traits>& checker, const Options& o)
     CHECK(u.number_of_input_rings() == s.whole.size(), name << ": the union has " << u.number_of_input_rings()
                                                             << " rings, the polygon " << s.whole.size());
     checker.compare(u, "union", true, name, rings_of(u));
+    CHECK(stats.anomalies == 0 && stats.recomputed == 0 && stats.undecided_ties == 0,
+          name << ": the merges met " << stats.anomalies << " anomalies and " << stats.undecided_ties
+               << " undecided ties (computed again: " << stats.recomputed << ")");
+    if(seed % 4 == 0) {
+      // the union's way out, forced: the axis again, in one shot of the
+      // union polygon, in the same numbering
+      struct Forced {
+        Forced() { CGAL::Progressive_medial_axes::internal::union_way_out_forced() = true; }
+        ~Forced() { CGAL::Progressive_medial_axes::internal::union_way_out_forced() = false; }
+      } forced;
+      CGAL::Progressive_medial_axes::Medial_axis_union_statistics redone;
+      const MA again = CGAL::medial_axis_union_2(a, b, Traits(), &redone);
+      CHECK(redone.recomputed == 1, name << ": the forced way out was not taken");
+      checker.compare(again, "union's way out", true, name, rings_of(again));
+      auto sorted = [&](const MA& ma) {
+        auto p = pairs(ma);
+        for(auto& q : p)
+          if(q.second < q.first) std::swap(q.first, q.second);
+        std::sort(p.begin(), p.end());
+        return p;
+      };
+      CHECK(rings_of(again) == rings_of(u) && sorted(again) == sorted(u),
+            name << ": the way out numbers the union otherwise than its merges");
+    }
     ++count;
     if(pma_test::failures() > 20) return;
   }

@@ -196,7 +196,7 @@ void union_of_two(const std::string& data)
   CHECK(r.status == 0 && r.out.find("\nunion_shared_edges 2\n") != std::string::npos &&
           r.out.find("\nunion_chains 2\n") != std::string::npos && r.out.find("\ntime_union_merge ") != std::string::npos &&
           r.out.find("\nmode oneshot\n") != std::string::npos && r.out.find("\nundecided_ties 0\n") != std::string::npos &&
-          r.out.find("\nanomalies 0\n") != std::string::npos,
+          r.out.find("\nanomalies 0\n") != std::string::npos && r.out.find("\nunion_recomputed 0\n") != std::string::npos,
         "--union --stats: " << r.out << r.err);
   const std::vector<std::pair<std::string, std::string> > bad = {
     {"--union " + d + "hole_filled_b.wkt " + d + "hole_filled_a.wkt", "not supported yet: a whole ring is shared"},

@@ -853,7 +853,9 @@ int run(const Options& o)
     add_statistics(job.stats, sb);
     job.stats.switches += union_stats.switches;
     job.stats.vanishings += union_stats.vanishings;
-    job.stats.anomalies += union_stats.anomalies;
+    // (where the merges met anomalies, the union's axis was computed again
+    // in one shot: they do not touch it)
+    if(!union_stats.recomputed) job.stats.anomalies += union_stats.anomalies;
     job.stats.undecided_ties += union_stats.undecided_ties;
     job.stats.validation_seconds = 0;   // (counted in time_read with the reading)
     job.ma = &job.one_shot;
@@ -1135,8 +1137,10 @@ int run(const Options& o)
       std::printf("triangulation_split %zu\n", s.split_triangulations);
     }
     if(!o.union_with.empty())
-      std::printf("time_union_merge %.6f\ntime_union_join %.6f\nunion_shared_edges %zu\nunion_chains %zu\n",
-                  union_stats.merge_seconds, union_stats.join_seconds, union_stats.shared_edges, union_stats.chains);
+      std::printf("time_union_merge %.6f\ntime_union_join %.6f\nunion_shared_edges %zu\nunion_chains %zu\n"
+                  "union_recomputed %zu\n",
+                  union_stats.merge_seconds, union_stats.join_seconds, union_stats.shared_edges, union_stats.chains,
+                  union_stats.recomputed);
     std::printf("medial_curves %zu\nbranch_vertices %zu\n", curves, nb);
     print_filter_statistics(Traits(), 0);
     if(o.prune) std::printf("pruned_curves %zu\n", pruned_curves);

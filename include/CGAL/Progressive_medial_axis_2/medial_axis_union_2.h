@@ -15,8 +15,11 @@
 #include <CGAL/license/Progressive_medial_axis_2.h>
 
 #include <CGAL/Progressive_medial_axis_traits_2.h>
+#include <CGAL/Progressive_medial_axis_2.h>
 #include <CGAL/Progressive_medial_axis_2/Medial_axis_2.h>
 #include <CGAL/Progressive_medial_axis_2/internal/Union.h>
+
+#include <chrono>
 
 namespace CGAL {
 
@@ -44,6 +47,13 @@ found and validated, in time linear in the sizes of `a` and `b`; the merges
 themselves cost in proportion to the cells that touch the shared chains.
 `a` and `b` are left as they are.
 
+Where the merges meet an anomaly (a bug of the merge, counted in
+`statistics->anomalies`; 0 on every shape tried), the axis could be wrong
+near it: the union's axis is then computed again, in one shot of the union
+polygon (`CGAL::medial_axis_2()`, which itself has a way out), with the same
+numbering, and `statistics->recomputed` is 1.  This costs a one-shot of the
+union instead of the local merges.
+
 Throws `Progressive_medial_axes::Input_error`, with one line naming the
 problem, when an axis is not the axis of a whole polygon, when the polygons
 share no edge, when they overlap, or when the union is not a valid polygon.
@@ -60,6 +70,19 @@ Medial_axis_2<K> medial_axis_union_2(const Medial_axis_2<K>& a, const Medial_axi
   Progressive_medial_axes::internal::Medial_axis_union<Traits> driver(*Access::data(a), *Access::data(b), traits);
   Progressive_medial_axes::Medial_axis_union_statistics stats;
   auto data = driver.run(stats);
+  if(stats.anomalies != 0 || Progressive_medial_axes::internal::union_way_out_forced().load(std::memory_order_relaxed)) {
+    // (a bug of the merge: no wrong axis is returned, the union polygon's
+    // axis is computed in one shot, from its rings in the same numbering)
+    const auto t0 = std::chrono::steady_clock::now();
+    Progressive_medial_axis_statistics one_shot;
+    Medial_axis_2<K> redone =
+        Progressive_medial_axes::internal::one_shot_medial_axis(driver.rings(), traits, CHECK_INPUT, &one_shot);
+    stats.recomputed = 1;
+    stats.undecided_ties = one_shot.undecided_ties;
+    stats.merge_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    if(statistics) *statistics = stats;
+    return redone;
+  }
   if(statistics) *statistics = stats;
   return Access::make<K>(std::shared_ptr<const typename decltype(data)::element_type>(data));
 }

@@ -51,6 +51,12 @@
 // its neighbours (the removal of a point site), which the merge does not do.
 // Such unions are refused with an error.
 //
+// Where the merges meet an anomaly (a bug; none on any shape tried),
+// CGAL::medial_axis_union_2() computes the union's axis again in one shot of
+// rings() (the union polygon, in the numbering of the ids), as the one-shot
+// computes its own again by region growing: no axis the merges may have
+// got wrong is returned.
+//
 // The union's points are its rings' (the numbering that the ids refer to),
 // followed by the places inside shared chains, which are no vertices of the
 // union (no cell of the result refers to them; this is checked).
@@ -66,6 +72,7 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <chrono>
 #include <cstddef>
 #include <functional>
@@ -87,13 +94,23 @@ struct Medial_axis_union_statistics {
   std::size_t chains = 0;         ///< maximal chains of shared edges
   std::size_t switches = 0;       ///< switch points of the merges
   std::size_t vanishings = 0;     ///< vanishing points of the merges
-  std::size_t anomalies = 0;      ///< events the merges forced to keep the topology valid (a bug, as in `Merge_statistics::anomalies`: the axis may be wrong near them; 0 on every shape tried)
-  std::size_t undecided_ties = 0; ///< ties of two vanishings that the merges left undecided (see `Merge_statistics::undecided_ties`; 0 on every shape tried)
+  std::size_t anomalies = 0;      ///< events the merges forced to keep the topology valid (a bug, as in `Merge_statistics::anomalies`; 0 on every shape tried): the axis is then computed again (`recomputed`), and this counts what the merges met
+  std::size_t undecided_ties = 0; ///< ties of two vanishings left undecided in the computation of the axis returned: by the merges, or by the one-shot where it was computed again (see `Merge_statistics::undecided_ties`; 0 on every shape tried)
+  std::size_t recomputed = 0;     ///< 1 if the merges met an anomaly and the union's axis was computed again, in one shot of the union polygon (`CGAL::medial_axis_2()`, same numbering); else 0
   double join_seconds = 0;        ///< finding the shared chains, the union's rings and its validation, copying the two structures
-  double merge_seconds = 0;       ///< the merges alone
+  double merge_seconds = 0;       ///< the merges alone (with the one-shot, where the axis was computed again)
 };
 
 namespace internal {
+
+/// For tests of the union's way out (`CGAL::medial_axis_union_2()`): while
+/// set, every union computes its axis again, as if its merges had met an
+/// anomaly.
+inline std::atomic<bool>& union_way_out_forced()
+{
+  static std::atomic<bool> forced(false);
+  return forced;
+}
 
 // Hash of an edge given by the coordinates of its ends (as doubles; equal
 // points have equal doubles, and candidates are compared exactly).
@@ -158,6 +175,10 @@ public:
     check_result(*data);
     return data;
   }
+
+  /// The union polygon's rings (once run() has found them): the numbering
+  /// that the result's ids refer to.
+  const std::vector<std::vector<Point_2> >& rings() const { return rings_; }
 
 private:
   const Point_2& place(int x, int k) const { return in_[x]->points[std::size_t(k)]; }
@@ -372,7 +393,8 @@ private:
   // shared chains; and the union corner of every corner of the two polygons.
   void build_points(Data& data, const std::vector<std::vector<std::pair<int, int> > >& rings)
   {
-    std::vector<std::vector<Point_2> > points;
+    std::vector<std::vector<Point_2> >& points = rings_;
+    points.clear();
     for(const auto& r : rings) {
       points.emplace_back();
       for(const auto& c : r) points.back().push_back(place(c.first, c.second));
@@ -478,6 +500,7 @@ private:
   mutable std::vector<int> prev_[2];
   std::vector<Group> groups_;
   std::vector<std::vector<int> > chains_;
+  std::vector<std::vector<Point_2> > rings_;   // the union polygon
   int offset_ = 0;
 };
 
