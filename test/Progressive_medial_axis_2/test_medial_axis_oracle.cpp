@@ -1051,6 +1051,38 @@ void union_tests(Checker<Traits>& checker, const Options& o)
     ++count;
     if(pma_test::failures() > 20) return;
   }
+  // a hole filled exactly (a ring shared as a whole): not merged, computed
+  // in one shot of the union polygon; the filler has a hole of its own in
+  // every other seed, and the order of the two axes alternates
+  std::size_t filled = 0;
+  for(int seed = 0; seed < (o.quick ? 8 : 30); ++seed) {
+    pma_test::random_detail::Rng rng(std::uint64_t(seed) * 104729 + 5 + o.seed_base);
+    const int n = 5 + int(rng.below(20));
+    std::vector<Point> star;
+    for(int i = 0; i < n; ++i) {
+      const double t = 2 * pma_test::random_detail::pi * (i + rng.uniform(0.1, 0.9)) / n, r = rng.uniform(1, 3);
+      star.push_back(Point(r * std::cos(t), r * std::sin(t)));
+    }
+    const Rings with_hole{{Point(-10, -10), Point(10, -10), Point(10, 10), Point(-10, 10)},
+                          std::vector<Point>(star.rbegin(), star.rend())};
+    Rings filler{star};
+    if(seed % 2 == 1) filler.push_back({Point(0.2, 0), Point(-0.1, -0.2), Point(-0.1, 0.2)});
+    const std::string name = "union of a hole filled exactly, seed " + std::to_string(seed);
+    try {
+      CGAL::Progressive_medial_axes::Medial_axis_union_statistics stats;
+      const MA a = axis(with_hole), b = axis(filler);
+      const MA u = seed % 4 < 2 ? CGAL::medial_axis_union_2(a, b, Traits(), &stats)
+                                : CGAL::medial_axis_union_2(b, a, Traits(), &stats);
+      CHECK(stats.recomputed == 1 && stats.chains == 1 && stats.shared_edges == std::size_t(n),
+            name << ": recomputed " << stats.recomputed << ", " << stats.chains << " chains, " << stats.shared_edges
+                 << " shared edges");
+      CHECK(u.number_of_input_rings() == filler.size(), name << ": the union has " << u.number_of_input_rings() << " rings");
+      checker.compare(u, "union", true, name, rings_of(u));
+    } catch(const std::exception& e) {
+      CHECK(false, name << ": " << e.what() << "\n  a: " << wkt(with_hole) << "\n  b: " << wkt(filler));
+    }
+    ++filled;
+  }
   // real and synthetic outlines split along diagonals of their constrained
   // Delaunay triangulation (one shared edge between two parts with long
   // cells of real data), three diagonals each
@@ -1158,8 +1190,8 @@ void union_tests(Checker<Traits>& checker, const Options& o)
     const std::string what = error_of(p.medial_axis(), axis(Rings{{Point(2, 0), Point(0, 0), Point(1, -3)}}));
     CHECK(what.find("not the axis of a whole polygon") != std::string::npos, "union with a progressive step: '" << what << "'");
   }
-  std::cout << "union: " << count << " splits, " << diagonals << " outlines split along a diagonal, " << grids
-            << " grid skylines\n";
+  std::cout << "union: " << count << " splits, " << filled << " holes filled exactly, " << diagonals
+            << " outlines split along a diagonal, " << grids << " grid skylines\n";
 }
 
 template <class Traits>

@@ -188,7 +188,7 @@ void boundary_evolution(const std::string& data)
 void union_of_two(const std::string& data)
 {
   const std::string d = data + "/union/";
-  for(const char* p : {"star", "ring", "chain2", "chain40"}) {
+  for(const char* p : {"star", "ring", "chain2", "chain40", "hole_filled"}) {
     pairs_against_oracle(d + p + "_a.wkt", {-1}, "--union " + d + p + "_b.wkt");
     pairs_against_oracle(d + p + "_b.wkt", {-1}, "--union " + d + p + "_a.wkt");
   }
@@ -198,8 +198,12 @@ void union_of_two(const std::string& data)
           r.out.find("\nmode oneshot\n") != std::string::npos && r.out.find("\nundecided_ties 0\n") != std::string::npos &&
           r.out.find("\nanomalies 0\n") != std::string::npos && r.out.find("\nunion_recomputed 0\n") != std::string::npos,
         "--union --stats: " << r.out << r.err);
+  // a hole filled exactly: a whole ring shared, computed in one shot
+  r = run(tool + " --stats --union " + d + "hole_filled_b.wkt " + d + "hole_filled_a.wkt");
+  CHECK(r.status == 0 && r.out.find("\nunion_recomputed 1\n") != std::string::npos &&
+          r.out.find("\nunion_chains 1\n") != std::string::npos && r.out.find("\nunion_shared_edges 4\n") != std::string::npos,
+        "--union --stats of a hole filled: " << r.out << r.err);
   const std::vector<std::pair<std::string, std::string> > bad = {
-    {"--union " + d + "hole_filled_b.wkt " + d + "hole_filled_a.wkt", "not supported yet: a whole ring is shared"},
     {"--union " + d + "star_a.wkt " + d + "star_a.wkt", "the polygons overlap"},
     {"--union " + data + "/syn_comb50.wkt " + d + "star_a.wkt", "the polygons share no edge"},
     {"--union " + data + "/syn_comb50.wkt " + data + "/invalid/crossing.wkt", "crossing.wkt: self-intersection"}};

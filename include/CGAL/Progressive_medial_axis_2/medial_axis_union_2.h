@@ -47,12 +47,16 @@ found and validated, in time linear in the sizes of `a` and `b`; the merges
 themselves cost in proportion to the cells that touch the shared chains.
 `a` and `b` are left as they are.
 
-Where the merges meet an anomaly (a bug of the merge, counted in
-`statistics->anomalies`; 0 on every shape tried), the axis could be wrong
-near it: the union's axis is then computed again, in one shot of the union
-polygon (`CGAL::medial_axis_2()`, which itself has a way out), with the same
-numbering, and `statistics->recomputed` is 1.  This costs a one-shot of the
-union instead of the local merges.
+Two cases are computed in one shot of the union polygon instead
+(`CGAL::medial_axis_2()`, which itself has a way out), with the same
+numbering, and `statistics->recomputed` is then 1; this costs a one-shot of
+the union instead of the local merges:
+- a ring shared as a whole (one polygon fills a hole of the other exactly):
+  the last merge along it would close a crack whose two ends are inside the
+  union, which the merge does not do;
+- merges that meet an anomaly (a bug of the merge, counted in
+  `statistics->anomalies`; 0 on every shape tried), where the axis could be
+  wrong near it.
 
 Throws `Progressive_medial_axes::Input_error`, with one line naming the
 problem, when an axis is not the axis of a whole polygon, when the polygons
@@ -70,9 +74,11 @@ Medial_axis_2<K> medial_axis_union_2(const Medial_axis_2<K>& a, const Medial_axi
   Progressive_medial_axes::internal::Medial_axis_union<Traits> driver(*Access::data(a), *Access::data(b), traits);
   Progressive_medial_axes::Medial_axis_union_statistics stats;
   auto data = driver.run(stats);
-  if(stats.anomalies != 0 || Progressive_medial_axes::internal::union_way_out_forced().load(std::memory_order_relaxed)) {
-    // (a bug of the merge: no wrong axis is returned, the union polygon's
-    // axis is computed in one shot, from its rings in the same numbering)
+  if(!data || stats.anomalies != 0 ||
+     Progressive_medial_axes::internal::union_way_out_forced().load(std::memory_order_relaxed)) {
+    // (a ring shared as a whole, which the merges do not close, or a bug of
+    // the merge: no wrong axis is returned, the union polygon's axis is
+    // computed in one shot, from its rings in the same numbering)
     const auto t0 = std::chrono::steady_clock::now();
     Progressive_medial_axis_statistics one_shot;
     Medial_axis_2<K> redone =

@@ -43,16 +43,18 @@
 //      the union and removes its cell (Medial_merge::initialize_slit()).
 //      Each merge costs in proportion to the cells it touches.
 //
-// Not supported yet: a ring shared as a whole (one polygon fills a hole of
-// the other exactly).  Whatever the order, the last merge along it closes a
+// Not merged: a ring shared as a whole (one polygon fills a hole of the
+// other exactly).  Whatever the order, the last merge along it closes a
 // crack whose two ends are tips: when the retracting tip reaches the far
 // end, the cells of the tip and of that end are one point's cell, and that
 // point is no generator of the union; its cell has to be shared out among
 // its neighbours (the removal of a point site), which the merge does not do.
-// Such unions are refused with an error.
+// Such a union is found and validated as any other, and its axis computed
+// in one shot of its polygon instead (CGAL::medial_axis_union_2()).
 //
-// Where the merges meet an anomaly (a bug; none on any shape tried),
-// CGAL::medial_axis_union_2() computes the union's axis again in one shot of
+// Where the merges meet an anomaly (a bug; none on any shape tried), or
+// where a ring is shared as a whole (above),
+// CGAL::medial_axis_union_2() computes the union's axis in one shot of
 // rings() (the union polygon, in the numbering of the ids), as the one-shot
 // computes its own again by region growing: no axis the merges may have
 // got wrong is returned.
@@ -96,7 +98,7 @@ struct Medial_axis_union_statistics {
   std::size_t vanishings = 0;     ///< vanishing points of the merges
   std::size_t anomalies = 0;      ///< events the merges forced to keep the topology valid (a bug, as in `Merge_statistics::anomalies`; 0 on every shape tried): the axis is then computed again (`recomputed`), and this counts what the merges met
   std::size_t undecided_ties = 0; ///< ties of two vanishings left undecided in the computation of the axis returned: by the merges, or by the one-shot where it was computed again (see `Merge_statistics::undecided_ties`; 0 on every shape tried)
-  std::size_t recomputed = 0;     ///< 1 if the merges met an anomaly and the union's axis was computed again, in one shot of the union polygon (`CGAL::medial_axis_2()`, same numbering); else 0
+  std::size_t recomputed = 0;     ///< 1 if the union's axis was computed in one shot of the union polygon (`CGAL::medial_axis_2()`, same numbering) instead of by the merges alone: where a ring is shared as a whole (one polygon fills a hole of the other exactly), which the merges do not close, or where the merges met an anomaly; else 0
   double join_seconds = 0;        ///< finding the shared chains, the union's rings and its validation, copying the two structures
   double merge_seconds = 0;       ///< the merges alone (with the one-shot, where the axis was computed again)
 };
@@ -152,6 +154,13 @@ public:
     std::vector<std::vector<std::pair<int, int> > > rings = union_rings();
     auto data = std::make_shared<Data>();
     build_points(*data, rings);
+    stats.chains = chains_.size();
+    stats.shared_edges = 0;
+    for(const auto& c : chains_) stats.shared_edges += c.size();
+    if(whole_ring_shared_) {   // (no merges: see whole_ring_shared())
+      stats.join_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+      return nullptr;
+    }
     join(*data);
     stats.join_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 
@@ -169,12 +178,15 @@ public:
     }
     engine.resolve_pending();
     stats.merge_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    stats.chains = chains_.size();
-    stats.shared_edges = 0;
-    for(const auto& c : chains_) stats.shared_edges += c.size();
     check_result(*data);
     return data;
   }
+
+  /// Whether a ring is shared as a whole (one polygon fills a hole of the
+  /// other exactly): run() then validates the union but merges nothing and
+  /// returns null, and the caller computes the union's axis in one shot of
+  /// rings().
+  bool whole_ring_shared() const { return whole_ring_shared_; }
 
   /// The union polygon's rings (once run() has found them): the numbering
   /// that the result's ids refer to.
@@ -268,10 +280,10 @@ private:
     }
     // A ring shared as a whole (the second polygon fills a hole of the
     // first exactly, or the other way round): its last edge would be a crack
-    // with both ends inside the union, which the merge does not close.
-    for(std::size_t c = cyclic_from; c < chains_.size(); ++c)
-      throw Input_error("not supported yet: a whole ring is shared (" + where(0, chains_[c].front()) +
-                        "): one polygon fills a hole of the other exactly");
+    // with both ends inside the union, which the merge does not close.  The
+    // union is found and validated all the same, and its axis computed in
+    // one shot (see whole_ring_shared()).
+    whole_ring_shared_ = chains_.size() > cyclic_from;
   }
 
   int prev(int x, int k) const
@@ -501,6 +513,7 @@ private:
   std::vector<Group> groups_;
   std::vector<std::vector<int> > chains_;
   std::vector<std::vector<Point_2> > rings_;   // the union polygon
+  bool whole_ring_shared_ = false;
   int offset_ = 0;
 };
 
