@@ -29,7 +29,7 @@ struct Merge_statistics {
   std::size_t vanishings = 0;   ///< vanishing points traversed
   std::size_t max_queue = 0;    ///< n_v: the largest number of live vanishing candidates
   std::size_t anomalies = 0;    ///< events forced to keep the topology valid (0 with exact decisions)
-  std::size_t undecided_ties = 0; ///< vanishing candidates of a disk that has two (the merge's list holds one generator on both sides of two nodes) whose check of the tip's side was left undecided, within the margin of its computation in doubles: the candidate stayed, and of the two the one computed first was taken, maybe wrongly (0 on every shape tried)
+  std::size_t undecided_ties = 0; ///< vanishing candidates of a disk that has two (the merge's list holds one generator on both sides of two nodes) whose check of the tip's place on the disk was left undecided, within the margin of its computation in doubles: the candidate stayed, and of the two the one computed first was taken, maybe wrongly (0 on every shape tried)
   bool redone_exactly = false;  ///< the double model met an anomaly and the merge was redone with exact decisions
 };
 

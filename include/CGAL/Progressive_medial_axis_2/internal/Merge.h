@@ -640,58 +640,99 @@ private:
   // The rule.  At the time of a vanishing of n between a and c, the tip of
   // the separator is on the circle of D, in the arc from c to a
   // (counter-clockwise): the cells around the new vertex are a, n, c and the
-  // tip's.  D touches G at one point f; counter-clockwise from f the circle
-  // runs along G's direction (the shape is on G's left).  So X vanishes when
-  // the tip is before f (its foot on G's line is smaller than f's), Y when it
-  // is after f.
+  // tip's.  Counter-clockwise from the point f where D touches G, the circle
+  // meets X's contact point x, then Y's, y (they are one point where X is
+  // the end point of Y, or the other way round).  So Y vanishes (G X Y, tip)
+  // when the tip comes after f and before x, and X vanishes (X Y G, tip)
+  // when it comes after y and before f.  Three points of a circle are in
+  // counter-clockwise order along it exactly when they make a
+  // counter-clockwise triangle, so each is one orientation.  (Until the
+  // fiftieth session the rule asked only on which side of f the tip's foot
+  // on G's line lies, as if x and y were f's antipode.  Where they are not,
+  // that took the wrong vanishing: a triangular hole 0.0013 from a long
+  // edge, whose disk touches the hole's corner and its edge at one point
+  // far from f's antipode; regression shape l10m_SWE_tie_far_from_antipode,
+  // RESULTS.md, fiftieth session.)
   //
-  // Where G is a segment and the one of X, Y that would be left between the
-  // two G's is the point at an end of G, this is decided exactly, without
-  // numbers: a disk tangent to G and through its end Y touches G at Y, so
-  // every edge between the cells of Y and G is a piece of G's normal at Y;
-  // the disks centred along that normal are nested, so it is one edge, and Y
-  // cannot have G on both sides.  Elsewhere the tip's side of f is computed
-  // in doubles from the disk's centre and radius (the traits' construction)
-  // and decides only with a clear margin; else both candidates stay, the
-  // one computed first is taken, and `undecided_ties` counts it (as where G
-  // is a point, for which no rule is written: no shape tried has met either).
+  // Where G is a segment and X or Y is the point at an end of G, this is
+  // decided exactly, without numbers: a disk tangent to G and through its
+  // end Y touches G at Y, so every edge between the cells of Y and G is a
+  // piece of G's normal at Y; the disks centred along that normal are
+  // nested, so it is one edge, and Y cannot have G on both sides: the other
+  // one vanishes.  (There the contacts of G and of that point are one, and
+  // the orientations below are 0.)  Elsewhere the tip and the contact points
+  // are computed in doubles from the disk's centre and radius (the traits'
+  // construction), and the orientations decide only with a clear margin;
+  // else both candidates stay, the one computed first is taken, and
+  // `undecided_ties` counts it.
   CGAL_PMA2_NOINLINE bool tip_excludes(int n, int twice)
   {
     const int a = nodes_[n].prev, c = nodes_[n].next;
     const int fa = nodes_[a].face, fb = nodes_[n].face, fc = nodes_[c].face;
-    const int G = twice == G_BEFORE ? fa : fc;
+    const int G = twice == G_BEFORE ? fa : fc, X = twice == G_BEFORE ? fb : fa, Y = twice == G_BEFORE ? fc : fb;
     if(end_point_between(G, twice == G_BEFORE ? fc : fa))
       return true;
+    if(end_point_between(G, fb))   // (the other vanishing would leave n between the two G's)
+      return false;
     // (both candidates stay)
     auto undecided = [this] {
       ++stats_.undecided_ties;
       return false;
     };
-    const Hds_face& g = chds().face(G);
     Point_2 centre;
     FT radius;
-    if(g.is_point || !traits_.construct_medial_disk_2_object()(site(fa), site(fb), site(fc), centre, radius))
+    if(!traits_.construct_medial_disk_2_object()(site(fa), site(fb), site(fc), centre, radius))
       return undecided();
     const double cx = CGAL::to_double(centre.x()), cy = CGAL::to_double(centre.y()), r = CGAL::to_double(radius);
-    const Point_2 &P = points_[P_], &Q = points_[Q_], &g0 = points_[g.p0], &g1 = points_[g.p1];
+    const Point_2 &P = points_[P_], &Q = points_[Q_];
     const double px = CGAL::to_double(P.x()), py = CGAL::to_double(P.y());
     double ux = CGAL::to_double(Q.x()) - px, uy = CGAL::to_double(Q.y()) - py;
-    double gx = CGAL::to_double(g1.x()) - CGAL::to_double(g0.x()), gy = CGAL::to_double(g1.y()) - CGAL::to_double(g0.y());
-    const double lu = std::sqrt(ux * ux + uy * uy), lg = std::sqrt(gx * gx + gy * gy);
-    if(!(lu > 0 && lg > 0 && r > 0))
+    const double lu = std::sqrt(ux * ux + uy * uy);
+    if(!(lu > 0 && r > 0))
       return undecided();
-    ux /= lu; uy /= lu; gx /= lg; gy /= lg;
+    ux /= lu; uy /= lu;
     // the tip: where the separator's line leaves the disk
     const double wx = cx - px, wy = cy - py;
     const double m = wx * ux + wy * uy;
     const double h2 = r * r - (wx * wx + wy * wy - m * m);
     const double s = m + std::sqrt((std::max)(h2, 0.0));
-    const double side = (px + s * ux - cx) * gx + (py + s * uy - cy) * gy;   // the tip's foot on G, from f's
-    // (the tip's error grows like sqrt(h2)'s where the line nearly touches the disk)
-    const double margin = 1e-6 * (r + std::sqrt(wx * wx + wy * wy)) + 1e-12 * (std::abs(cx) + std::abs(cy));
-    if(!(std::abs(side) > margin))
+    const double tx = px + s * ux, ty = py + s * uy;
+    // where D touches a generator: the point, or the foot of the centre on
+    // the segment's line (the disk touches the segment itself)
+    auto contact = [&](int face, double& x, double& y) {
+      const Hds_face& h = chds().face(face);
+      const Point_2& p0 = points_[h.p0];
+      x = CGAL::to_double(p0.x());
+      y = CGAL::to_double(p0.y());
+      if(h.is_point) return true;
+      const Point_2& p1 = points_[h.p1];
+      const double dx = CGAL::to_double(p1.x()) - x, dy = CGAL::to_double(p1.y()) - y, l2 = dx * dx + dy * dy;
+      if(!(l2 > 0)) return false;
+      const double t = ((cx - x) * dx + (cy - y) * dy) / l2;
+      x += t * dx;
+      y += t * dy;
+      return true;
+    };
+    double fx, fy, xx, xy, yx, yy;
+    if(!contact(G, fx, fy) || !contact(X, xx, xy) || !contact(Y, yx, yy))
       return undecided();
-    return twice == G_BEFORE ? side > 0 : side < 0;
+    // > 0: counter-clockwise along the circle from (ax, ay), (bx, by) comes before (ex, ey)
+    auto ccw = [](double ax, double ay, double bx, double by, double ex, double ey) {
+      return (bx - ax) * (ey - ay) - (by - ay) * (ex - ax);
+    };
+    const double y_vanishes = ccw(fx, fy, tx, ty, xx, xy), x_vanishes = ccw(fx, fy, yx, yy, tx, ty);
+    // (a point's error: the tip's grows like sqrt(h2)'s where the line
+    // nearly touches the disk; an orientation's, of points 2r apart at most)
+    const double margin = 8 * r * (1e-6 * (r + std::sqrt(wx * wx + wy * wy)) + 1e-12 * (std::abs(cx) + std::abs(cy)));
+    const bool y_clear = y_vanishes > margin && x_vanishes < -margin, x_clear = x_vanishes > margin && y_vanishes < -margin;
+    CGAL_PMA2_TRACE_MSG("    tie of two vanishings at node " << n << " (" << face_string(fa) << " " << face_string(fb) << " "
+                        << face_string(fc) << "): G " << face_string(G) << ", orientations " << y_vanishes << " (Y) "
+                        << x_vanishes << " (X), margin " << margin << ": "
+                        << (y_clear ? "Y vanishes" : x_clear ? "X vanishes" : "undecided"));
+    if(!y_clear && !x_clear)
+      return undecided();
+    // (n is X where G comes before it)
+    return twice == G_BEFORE ? y_clear : x_clear;
   }
 
   // Whether face y is the point at an end of the segment of face g.
