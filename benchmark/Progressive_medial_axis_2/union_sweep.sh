@@ -12,11 +12,12 @@ T=$root/build/tool/Progressive_medial_axis_2/progressive_medial_axis
 C=$root/build/test/Progressive_medial_axis_2/compare_pairs
 for p in "$@"; do
   a=${p}_a.wkt; b=${p}_b.wkt
-  if ! $T --pairs --union "$b" --shape-out "${p}_u.wkt" "$a" > "${p}_up.txt" 2> "${p}_err.txt"; then
+  # (one run: its pair lines start with "pair", the --stats lines do not)
+  if ! $T --pairs --stats --union "$b" --shape-out "${p}_u.wkt" "$a" > "${p}_out.txt" 2> "${p}_err.txt"; then
     echo "$p UNION-FAILED $(head -c 300 "${p}_err.txt")"; continue
   fi
-  st=$($T --stats --union "$b" "$a" 2>> "${p}_err.txt" |
-       awk '$1=="anomalies"||$1=="undecided_ties"||$1=="union_shared_edges"||$1=="union_chains"||$1=="union_recomputed"{printf "%s=%s ", $1, $2}')
+  grep '^pair ' "${p}_out.txt" > "${p}_up.txt"
+  st=$(awk '$1=="anomalies"||$1=="undecided_ties"||$1=="union_shared_edges"||$1=="union_chains"||$1=="union_recomputed"{printf "%s=%s ", $1, $2}' "${p}_out.txt")
   $T --pairs "${p}_u.wkt" > "${p}_op.txt" 2>> "${p}_err.txt"
   if $C "${p}_u.wkt" "${p}_up.txt" "${p}_op.txt" > "${p}_cmp.txt" 2>&1; then r=same; else r=DIFFERENT; fi
   echo "$p $r $st$([ -s "${p}_err.txt" ] && echo " stderr: $(head -c 200 "${p}_err.txt")")"

@@ -956,7 +956,7 @@ int run(const Options& o)
   const double total_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   {
     // (a one-shot that meets an anomaly computes the axis again by region
-    // growing; a progressive run and a union cannot, and say so)
+    // growing, a union in one shot; a progressive run cannot, and says so)
     std::size_t anomalies = 0, undecided = 0;
     for(const Job& job : jobs) {
       anomalies += job.stats.anomalies;
