@@ -54,13 +54,22 @@ the union instead of the local merges:
 - a ring shared as a whole (one polygon fills a hole of the other exactly):
   the last merge along it would close a crack whose two ends are inside the
   union, which the merge does not do;
+- a T (a vertex inside an edge) that the union has and neither polygon has,
+  or a T on a shared edge (one polygon splits there an edge that the other
+  has whole): the merges would have to split that edge's cell;
 - merges that meet an anomaly (a bug of the merge, counted in
   `statistics->anomalies`; 0 on every shape tried), where the axis could be
   wrong near it.
 
+Where a polygon has a T of its own, the union's ring through the edge gets
+the place as a vertex (the union is noded there, as GEOS's overlays are),
+and the merges go on as usual.
+
 Throws `Progressive_medial_axes::Input_error`, with one line naming the
 problem, when an axis is not the axis of a whole polygon, when the polygons
-share no edge, when they overlap, or when the union is not a valid polygon.
+share no edge, when they overlap, or when the union is not a valid polygon;
+and, as "not supported yet", for a T on a shared edge of a polygon that has
+T's of its own too.
 
 \tparam Traits a model of `ProgressiveMedialAxisTraits_2` whose kernel is `K`.
 */

@@ -52,8 +52,19 @@
 // Such a union is found and validated as any other, and its axis computed
 // in one shot of its polygon instead (CGAL::medial_axis_union_2()).
 //
+// T's (a vertex inside an edge).  Where a polygon has one, its axis has
+// split the edge there and added a corner at the place (triangulate_rings());
+// these corners are corners like the others here, so the union's ring
+// through that edge has a vertex there too (the union is noded, as GEOS's
+// overlays are; the edge ids of that ring after it are one higher).  A T
+// that neither polygon has but the union has (a vertex of one polygon inside
+// an edge of the other that is not shared) is not merged either: the cells
+// of that edge would have to be split.  Such a union is computed in one shot
+// too.  An edge that one polygon splits and the other has whole (a T on a
+// shared edge) is an error, "not supported yet".
+//
 // Where the merges meet an anomaly (a bug; none on any shape tried), or
-// where a ring is shared as a whole (above),
+// where a ring is shared as a whole or the union has a T of its own (above),
 // CGAL::medial_axis_union_2() computes the union's axis in one shot of
 // rings() (the union polygon, in the numbering of the ids), as the one-shot
 // computes its own again by region growing: no axis the merges may have
@@ -78,6 +89,7 @@
 #include <chrono>
 #include <cstddef>
 #include <functional>
+#include <map>
 #include <memory>
 #include <string>
 #include <unordered_map>
@@ -144,11 +156,8 @@ public:
   std::shared_ptr<Data> run(Medial_axis_union_statistics& stats)
   {
     auto t0 = std::chrono::steady_clock::now();
-    for(int x = 0; x < 2; ++x)
-      if(in_[x]->points.size() != std::size_t(corners(x)))
-        throw Input_error(std::string("not supported yet: a union of polygons where a vertex lies inside an edge (polygon ") +
-                          (x == 0 ? "a" : "b") + ")");
     for(int x = 0; x < 2; ++x) check_complete(x);
+    node_split_shared_edges();
     find_shared_edges();
     group_corners();
     std::vector<std::vector<std::pair<int, int> > > rings = union_rings();
@@ -157,7 +166,7 @@ public:
     stats.chains = chains_.size();
     stats.shared_edges = 0;
     for(const auto& c : chains_) stats.shared_edges += c.size();
-    if(whole_ring_shared_) {   // (no merges: see whole_ring_shared())
+    if(one_shot_needed_) {   // (no merges: see one_shot_needed())
       stats.join_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
       return nullptr;
     }
@@ -182,11 +191,14 @@ public:
     return data;
   }
 
-  /// Whether a ring is shared as a whole (one polygon fills a hole of the
-  /// other exactly): run() then validates the union but merges nothing and
+  /// Whether the merges cannot give the union's axis: where a ring is
+  /// shared as a whole (one polygon fills a hole of the other exactly), or
+  /// where a vertex of the union lies inside an edge of the union (a T that
+  /// neither polygon has: the merged cells of that edge would have to be
+  /// split there).  run() then validates the union but merges nothing and
   /// returns null, and the caller computes the union's axis in one shot of
   /// rings().
-  bool whole_ring_shared() const { return whole_ring_shared_; }
+  bool one_shot_needed() const { return one_shot_needed_; }
 
   /// The union polygon's rings (once run() has found them): the numbering
   /// that the result's ids refer to.
@@ -195,7 +207,12 @@ public:
 private:
   const Point_2& place(int x, int k) const { return in_[x]->points[std::size_t(k)]; }
   int next(int x, int k) const { return in_[x]->info[std::size_t(k)].next; }
-  int corners(int x) const { return in_[x]->ring_start.back(); }
+  // The corners of polygon x: its input vertices, then the corners its
+  // axis added where one of its vertices lies inside one of its edges (a T:
+  // the edge is split there, see triangulate_rings()).  The split place is a
+  // vertex of the union's ring through that edge: the union polygon is
+  // noded there, as GEOS's overlays node theirs.
+  int corners(int x) const { return int(in_[x]->points.size()); }
   static const char* name(int x) { return x == 0 ? "the first polygon" : "the second polygon"; }
   std::string where(int x, int k) const
   {
@@ -282,8 +299,80 @@ private:
     // first exactly, or the other way round): its last edge would be a crack
     // with both ends inside the union, which the merge does not close.  The
     // union is found and validated all the same, and its axis computed in
-    // one shot (see whole_ring_shared()).
-    whole_ring_shared_ = chains_.size() > cyclic_from;
+    // one shot (see one_shot_needed()).
+    if(chains_.size() > cyclic_from) one_shot_needed_ = true;
+  }
+
+  // An edge that one polygon splits at a T of its own (see corners()) and
+  // that the other polygon has whole, reversed: a T on a shared edge.  The
+  // two do not share that edge edge for edge.  The union is found with a
+  // copy of the other polygon noded there (the place added to the edge as a
+  // vertex; in_[y] then points to that copy, and messages name its
+  // vertices), and its axis computed in one shot: the merges would have to
+  // split that edge's cell.  (The halves of a split edge keep its input
+  // edge; at a T the corners' outgoing edges are re-linked, so an added
+  // corner need not start a half of the edge it splits: the halves are found
+  // by their ends.)
+  void node_split_shared_edges()
+  {
+    // for each polygon y, the places to add inside its edges: (ring, written index of the edge) -> places
+    std::map<std::pair<int, int>, std::vector<Point_2> > add[2];
+    std::string first[2];   // the first such T, for a message
+    for(int x = 0; x < 2; ++x) {
+      const Data& d = *in_[x];
+      const int y = 1 - x;
+      if(corners(x) == d.ring_start.back()) continue;
+      std::unordered_multimap<std::array<double, 4>, int, Edge_key_hash> edges_y;
+      edges_y.reserve(std::size_t(corners(y)));
+      for(int m = 0; m < corners(y); ++m) edges_y.emplace(key(place(y, m), place(y, next(y, m))), m);
+      for(int k = 0; k < corners(x); ++k) {
+        // the input edge that the edge from k is (a half of), in the direction of x's interior
+        const Point_info& i = d.info[std::size_t(k)];
+        const int base = d.ring_start[std::size_t(i.edge_ring)], m = d.ring_start[std::size_t(i.edge_ring) + 1] - base;
+        int from = base + i.edge_index, to = base + (i.edge_index + 1) % m;
+        if(d.info[std::size_t(base)].reversed) std::swap(from, to);
+        const Point_2 &p = place(x, from), &q = place(x, to);
+        const bool split_at_k = !(place(x, k) == p);
+        if(!split_at_k && place(x, next(x, k)) == q) continue;
+        auto range = edges_y.equal_range(key(q, p));
+        for(auto it = range.first; it != range.second; ++it)
+          if(place(y, it->second) == q && place(y, next(y, it->second)) == p) {
+            const Point_info& e = in_[y]->info[std::size_t(it->second)];
+            std::vector<Point_2>& at = add[y][std::make_pair(e.edge_ring, e.edge_index)];
+            const int c = split_at_k ? k : next(x, k);
+            if(first[y].empty()) first[y] = where(x, c) + " lies inside the edge from " + where(x, from);
+            if(std::find(at.begin(), at.end(), place(x, c)) == at.end()) at.push_back(place(x, c));
+          }
+      }
+    }
+    for(int y = 0; y < 2; ++y) {
+      if(add[y].empty()) continue;
+      const Data& d = *in_[y];
+      if(corners(y) != d.ring_start.back())
+        throw Input_error("not supported yet: a union where a vertex lies inside a shared edge (" + first[y] + ", which " +
+                          name(y) + " has whole) and " + name(y) + " has a vertex inside an edge too");
+      std::vector<std::vector<Point_2> > rings;
+      for(std::size_t r = 0; r + 1 < d.ring_start.size(); ++r) {
+        const int base = d.ring_start[r], m = d.ring_start[r + 1] - base;
+        rings.emplace_back();
+        for(int i = 0; i < m; ++i) {
+          const Point_2& b = d.points[std::size_t(base + (i + 1) % m)];
+          rings.back().push_back(d.points[std::size_t(base + i)]);
+          auto it = add[y].find(std::make_pair(int(r), i));
+          if(it == add[y].end()) continue;
+          std::vector<Point_2> at = it->second;   // in order along the edge, from a to b
+          std::sort(at.begin(), at.end(), [&](const Point_2& u, const Point_2& v) {
+            return Kernel().collinear_are_strictly_ordered_along_line_2_object()(u, v, b);
+          });
+          rings.back().insert(rings.back().end(), at.begin(), at.end());
+        }
+      }
+      noded_[y] = std::make_shared<Data>();
+      set_points(*noded_[y], rings, traits_.orientation_2_object());
+      in_[y] = noded_[y].get();
+      prev_[y].clear();
+      one_shot_needed_ = true;
+    }
   }
 
   int prev(int x, int k) const
@@ -417,9 +506,12 @@ private:
     } catch(const Input_error& e) {
       throw Input_error(std::string("the union is not a valid polygon: ") + e.what());
     }
-    // (the merges along the shared chains would have to split the edges there)
-    if(t)
-      throw Input_error("not supported yet: a union where a vertex lies inside an edge");
+    // (the merges along the shared chains would have to split the edges
+    // there: see one_shot_needed())
+    if(t) {
+      one_shot_needed_ = true;
+      return;
+    }
     set_points(data, points, traits_.orientation_2_object());
     // a group's union corner: the union point whose outgoing edge is the
     // group's (an edge leaves one corner only)
@@ -508,12 +600,13 @@ private:
 
   const Traits& traits_;
   const Data* in_[2];
+  std::shared_ptr<Data> noded_[2];   // copies noded at T's on shared edges (see node_split_shared_edges())
   std::vector<int> boundary_[2], shared_[2], group_[2], map_[2];
   mutable std::vector<int> prev_[2];
   std::vector<Group> groups_;
   std::vector<std::vector<int> > chains_;
   std::vector<std::vector<Point_2> > rings_;   // the union polygon
-  bool whole_ring_shared_ = false;
+  bool one_shot_needed_ = false;
   int offset_ = 0;
 };
 

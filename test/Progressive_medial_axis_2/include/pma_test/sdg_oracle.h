@@ -1088,9 +1088,12 @@ private:
     // Every convex vertex is the end of one medial curve, the bisector of its two edges; no
     // reflex or flat vertex is. Without holes the two edges share no other curve (a second
     // one needs a hole between the corner and the disk; with holes only ">= 1" is checked).
+    // A ring that touches itself may enclose such a hole too (a vertex inside one of its
+    // own edges, as in a union whose ring touches its own edge; the halves of the edge
+    // keep its id, and each may share a curve with the corner's other edge).
     std::map<std::pair<std::string, std::string>, int> count;
     for(const Oracle_edge& e : G.edges) ++count[std::make_pair(e.a, e.b)];
-    const bool has_holes = P.ring_offset.size() > 1;
+    const bool has_holes = P.ring_offset.size() > 1 || std::any_of(P.touching.begin(), P.touching.end(), [](char t) { return t != 0; });
     for(std::size_t g = 0; g < P.pts.size(); ++g) {
       if(P.touching[g]) continue;   // (the edges of a vertex where rings touch may bound no sector)
       std::string a = P.edge_id(P.prev[g]), b = P.edge_id(static_cast<int>(g));
