@@ -818,6 +818,7 @@ void touching_tests(Checker<Traits>& checker, const Options& o)
 // A polygon split in two along chains of edges, for the union of two axes.
 struct Split {
   Rings whole, a, b;
+  int t_holes = 0;   // holes that touch an edge at a T
 };
 
 // A star-shaped polygon around the origin (n vertices, radii in [1, 2]),
@@ -827,8 +828,10 @@ struct Split {
 // narrow sector about ia's ray down to the origin, out in a sector about
 // ib's), so that the chain is simple.  With `hole`, the polygon has a small
 // hole about the origin and two chains (ia and ib to the hole), so that the
-// union encloses the hole.  `own_holes` small triangles lie in the parts.
-Split star_split(pma_test::random_detail::Rng& rng, int n, int edges, bool hole, int own_holes)
+// union encloses the hole.  `own_holes` small triangles lie in the parts;
+// `t_holes` more touch an edge of the outer ring at its midpoint (a T), away
+// from the chains.
+Split star_split(pma_test::random_detail::Rng& rng, int n, int edges, bool hole, int own_holes, int t_holes = 0)
 {
   const double pi = pma_test::random_detail::pi;
   std::vector<double> theta(static_cast<std::size_t>(n)), radius(static_cast<std::size_t>(n));
@@ -929,6 +932,27 @@ Split star_split(pma_test::random_detail::Rng& rng, int n, int edges, bool hole,
     used.push_back(t);
     own.emplace_back(t, std::vector<Point>{polar(0.7, t), polar(0.74, t + 0.03), polar(0.74, t - 0.03)});
   }
+  // T holes: a thin triangle from the midpoint of edge i of the outer ring
+  // inwards (the polygon is star-shaped about the origin); the edge's ends
+  // are rounded to multiples of 2^-20 first, so that the midpoint is exact
+  std::vector<std::pair<int, std::vector<Point> > > t_own;
+  for(int k = 0; k < t_holes; ++k) {
+    const int i = int(rng.below(std::uint64_t(n))), i1 = (i + 1) % n;
+    if(i == ia || i == ib || i1 == ia || i1 == ib) continue;
+    auto snap = [](const Point& x) {
+      return Point(std::ldexp(std::round(std::ldexp(x.x(), 20)), -20), std::ldexp(std::round(std::ldexp(x.y(), 20)), -20));
+    };
+    const Point p = snap(W[std::size_t(i)]), q = snap(W[std::size_t(i1)]);
+    const Point m((p.x() + q.x()) / 2, (p.y() + q.y()) / 2);
+    const double t = std::atan2(m.y(), m.x()), r = std::sqrt(m.x() * m.x() + m.y() * m.y());
+    bool ok = r > 0.9;
+    for(double u : used) ok = ok && std::fabs(std::remainder(t - u, 2 * pi)) > 0.15;
+    if(!ok) continue;
+    used.push_back(t);
+    W[std::size_t(i)] = p;
+    W[std::size_t(i1)] = q;
+    t_own.emplace_back(i, std::vector<Point>{m, polar(0.85 * r, t + 0.02), polar(0.85 * r, t - 0.02)});
+  }
   // (with a one-edge diagonal part a is the triangle beyond it)
   auto in_a = [&](double t) { return (hole || edges > 1) && t > ta && t < tb; };
   // the whole polygon
@@ -937,6 +961,7 @@ Split star_split(pma_test::random_detail::Rng& rng, int n, int edges, bool hole,
     s.whole.push_back(std::vector<Point>(H.rbegin(), H.rend()));
   }
   for(const auto& h : own) s.whole.push_back(h.second);
+  for(const auto& h : t_own) s.whole.push_back(h.second);
   // part a: vertices ia..ib, then back to ia
   std::vector<Point> A(W.begin() + ia, W.begin() + ib + 1), B;
   for(int i = ib; i < n; ++i) B.push_back(W[std::size_t(i)]);
@@ -962,6 +987,8 @@ Split star_split(pma_test::random_detail::Rng& rng, int n, int edges, bool hole,
   s.a.push_back(A);
   s.b.push_back(B);
   for(const auto& h : own) (in_a(h.first) ? s.a : s.b).push_back(h.second);
+  for(const auto& h : t_own) (h.first >= ia && h.first < ib ? s.a : s.b).push_back(h.second);
+  s.t_holes = int(t_own.size());
   return s;
 }
 
@@ -989,7 +1016,7 @@ void union_tests(Checker<Traits>& checker, const Options& o)
       }
     return r;
   };
-  std::size_t count = 0;
+  std::size_t count = 0, with_t = 0;
   const int seeds = o.quick ? 40 : 200;
   const int chain_lengths[] = {1, 2, 3, 5, 10, 30, 100};
   for(int seed = 0; seed < seeds; ++seed) {
@@ -997,9 +1024,10 @@ void union_tests(Checker<Traits>& checker, const Options& o)
     const bool hole = seed % 3 == 2;
     const int edges = chain_lengths[seed % 7];
     const int n = 12 + int(rng.below(40));
-    const Split s = star_split(rng, n, hole ? (std::max)(2, edges) : edges, hole, seed % 4 == 1 ? 3 : 0);
+    const int t_holes = seed % 5 == 3 ? 2 : 0;
+    const Split s = star_split(rng, n, hole ? (std::max)(2, edges) : edges, hole, seed % 4 == 1 ? 3 : 0, t_holes);
     const std::string name = "union seed " + std::to_string(seed) + " (" + std::to_string(edges) + " chain edges" +
-                             (hole ? ", around a hole" : "") + ")";
+                             (hole ? ", around a hole" : "") + (t_holes ? ", holes touching edges (T's)" : "") + ")";
     MA a, b;
     try {
       a = axis(s.a);
@@ -1049,8 +1077,10 @@ void union_tests(Checker<Traits>& checker, const Options& o)
             name << ": the way out numbers the union otherwise than its merges");
     }
     ++count;
+    with_t += s.t_holes > 0;
     if(pma_test::failures() > 20) return;
   }
+  CHECK(with_t >= std::size_t(seeds) / 10, "only " << with_t << " splits with holes touching an edge at a T");
   // a hole filled exactly (a ring shared as a whole): not merged, computed
   // in one shot of the union polygon; the filler has a hole of its own in
   // every other seed, and the order of the two axes alternates
@@ -1217,7 +1247,7 @@ void union_tests(Checker<Traits>& checker, const Options& o)
     const std::string what = error_of(p.medial_axis(), axis(Rings{{Point(2, 0), Point(0, 0), Point(1, -3)}}));
     CHECK(what.find("not the axis of a whole polygon") != std::string::npos, "union with a progressive step: '" << what << "'");
   }
-  std::cout << "union: " << count << " splits, " << filled << " holes filled exactly, " << diagonals
+  std::cout << "union: " << count << " splits (" << with_t << " with T's), " << filled << " holes filled exactly, " << diagonals
             << " outlines split along a diagonal, " << grids << " grid skylines, " << ts << " unions with T's\n";
 }
 

@@ -210,6 +210,16 @@ void union_of_two(const std::string& data)
             r.out.find("\nanomalies 0\n") != std::string::npos,
           "--union --stats of " << t.first << ": " << r.out << r.err);
   }
+  // OGC's form: the two holes that touch the union's outer ring at one point
+  // inside its edge are rings of their own, and the outer ring is noded there
+  r = run(tool + " --union " + d + "t_two_holes_b.wkt --shape-out " + tmp + "/u.wkt " + d + "t_two_holes_a.wkt");
+  {
+    const std::string u = slurp(tmp + "/u.wkt");
+    std::size_t rings = 0;
+    for(char c : u) rings += c == '(';
+    CHECK(r.status == 0 && rings == 4 && u.find("2 0, 4 0") != std::string::npos,
+          "--union of t_two_holes: " << u << r.err);
+  }
   const std::vector<std::pair<std::string, std::string> > bad = {
     {"--union " + d + "star_a.wkt " + d + "star_a.wkt", "the polygons overlap"},
     {"--union " + data + "/syn_comb50.wkt " + d + "star_a.wkt", "the polygons share no edge"},

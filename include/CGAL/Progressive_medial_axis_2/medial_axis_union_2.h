@@ -37,7 +37,9 @@ any length are merged, and several chains make the union enclose holes.
 The result is the axis of the union, the same as `CGAL::medial_axis_2()` of
 the union gives.  Its polygon is numbered as follows (the ids of its
 generators refer to it; `shape_rings()` and `point()` give it): the outer
-ring first, counter-clockwise, then the holes, clockwise; each ring starts
+ring first, counter-clockwise, then the holes, clockwise (in OGC's form: a
+hole that touches the outer ring or another hole at a point is a ring of its
+own; the lobes of a pinched union stay in the outer ring); each ring starts
 at the union vertex that comes first in input order (the vertices of `a`
 before those of `b`, by ring and index), and the holes come in the order of
 those vertices.

@@ -26,7 +26,10 @@
 //      corners is a point inside the union (a vertex inside a shared chain).
 //      This is topology only: no angle is computed.
 //   2. The union's boundary cycles are traced from corner to corner along the
-//      edges that are not shared.  The counter-clockwise cycle that holds the
+//      edges that are not shared.  Where a cycle passes a place twice with a
+//      clockwise loop between (a hole touching the outer ring or another
+//      hole at a point), the loop is made a ring of its own, as OGC has it
+//      (split_clockwise_loops()).  The counter-clockwise cycle that holds the
 //      smallest point is the outer ring (other counter-clockwise cycles, the
 //      lobes of a pinched union, are spliced into it where they touch it),
 //      the clockwise ones are holes.  The union is validated as any input.
@@ -77,6 +80,7 @@
 #ifndef CGAL_PROGRESSIVE_MEDIAL_AXIS_2_INTERNAL_UNION_H
 #define CGAL_PROGRESSIVE_MEDIAL_AXIS_2_INTERNAL_UNION_H
 
+#include <CGAL/Exact_rational.h>
 #include <CGAL/Progressive_medial_axis_2/Input_error.h>
 #include <CGAL/Progressive_medial_axis_2/Medial_axis_2.h>
 #include <CGAL/Progressive_medial_axis_2/validate_polygon.h>
@@ -451,6 +455,7 @@ private:
         cycles.back().push_back(h);
       }
     }
+    split_clockwise_loops(cycles);
     std::vector<char> ccw(cycles.size());
     for(std::size_t i = 0; i < cycles.size(); ++i) ccw[i] = counterclockwise(cycles[i]);
     // the outer ring: the counter-clockwise cycle with the smallest point
@@ -481,6 +486,68 @@ private:
       for(int g : c) rings.back().push_back(rank(g));
     }
     return rings;
+  }
+  // OGC's form of the union's rings.  Where a cycle passes one place twice
+  // and the loop between the two passes runs clockwise (a hole that touches
+  // the outer ring at a point, or two holes that touch), that loop becomes a
+  // ring of its own, a hole.  A loop that runs counter-clockwise (a lobe of a
+  // pinched union) stays in its cycle: one polygon has no other form for it.
+  // Each cycle is walked from its smallest place, which lies on its outer
+  // side (its convex hull) and is passed once, or the cycle is left as it
+  // is; a stack holds the walk with the loops taken out, and the sums of its
+  // edges' cross products give each loop's area, exactly (for points of
+  // doubles).  Linear in the size of the cycles that pass a place twice.
+  void split_clockwise_loops(std::vector<std::vector<int> >& cycles) const
+  {
+    typedef std::array<double, 2> Key;
+    struct Key_hash {
+      std::size_t operator()(const Key& k) const { return std::hash<double>()(k[0]) * 1000003u ^ std::hash<double>()(k[1]); }
+    };
+    auto key_of = [&](int g) { return Key{{CGAL::to_double(group_place(g).x()), CGAL::to_double(group_place(g).y())}}; };
+    // (the type named: with gmpxx an expression would refer to dead temporaries)
+    auto cross = [&](int u, int v) -> CGAL::Exact_rational {
+      const Point_2 &p = group_place(u), &q = group_place(v);
+      return CGAL::Exact_rational(CGAL::to_double(p.x())) * CGAL::Exact_rational(CGAL::to_double(q.y())) -
+             CGAL::Exact_rational(CGAL::to_double(p.y())) * CGAL::Exact_rational(CGAL::to_double(q.x()));
+    };
+    const std::size_t count = cycles.size();
+    for(std::size_t i = 0; i < count; ++i) {
+      std::unordered_multimap<Key, std::size_t, Key_hash> at;   // place -> positions in the cycle, then in the stack
+      at.reserve(cycles[i].size());
+      bool twice = false;
+      for(std::size_t k = 0; k < cycles[i].size(); ++k) {
+        const int g = cycles[i][k];
+        auto range = at.equal_range(key_of(g));
+        for(auto it = range.first; it != range.second && !twice; ++it) twice = group_place(cycles[i][it->second]) == group_place(g);
+        at.emplace(key_of(g), k);
+      }
+      if(!twice) continue;
+      std::vector<int> c = cycles[i];
+      std::rotate(c.begin(), std::min_element(c.begin(), c.end(), [&](int u, int v) { return smaller(group_place(u), group_place(v)); }), c.end());
+      std::size_t passes = 0;
+      for(int g : c) passes += group_place(g) == group_place(c[0]);
+      if(passes > 1) continue;
+      at.clear();
+      std::vector<int> stack;
+      std::vector<CGAL::Exact_rational> sum;   // sum[t]: cross products of the stack's edges up to stack[t]
+      for(int g : c) {
+        std::size_t j = stack.size();   // the latest position of g's place in the stack
+        auto range = at.equal_range(key_of(g));
+        for(auto it = range.first; it != range.second; ++it)
+          if(it->second < stack.size() && group_place(stack[it->second]) == group_place(g) && (j == stack.size() || it->second > j))
+            j = it->second;
+        if(j < stack.size() && CGAL::is_negative(CGAL::Exact_rational(sum.back() + cross(stack.back(), g) - sum[j]))) {
+          // a clockwise loop, stack[j] .. the top: a ring of its own
+          cycles.emplace_back(stack.begin() + std::ptrdiff_t(j), stack.end());
+          stack.resize(j);
+          sum.resize(j);
+        }
+        sum.push_back(stack.empty() ? CGAL::Exact_rational(0) : CGAL::Exact_rational(sum.back() + cross(stack.back(), g)));
+        at.emplace(key_of(g), stack.size());
+        stack.push_back(g);
+      }
+      cycles[i].swap(stack);
+    }
   }
   const Point_2& min_place(const std::vector<int>& cycle) const
   {
