@@ -933,8 +933,9 @@ Split star_split(pma_test::random_detail::Rng& rng, int n, int edges, bool hole,
     own.emplace_back(t, std::vector<Point>{polar(0.7, t), polar(0.74, t + 0.03), polar(0.74, t - 0.03)});
   }
   // T holes: a thin triangle from the midpoint of edge i of the outer ring
-  // inwards (the polygon is star-shaped about the origin); the edge's ends
-  // are rounded to multiples of 2^-20 first, so that the midpoint is exact
+  // inwards, inside the triangle of the edge and the origin (which lies in
+  // the polygon: it is star-shaped about the origin); the edge's ends are
+  // rounded to multiples of 2^-20 first, so that the midpoint is exact
   std::vector<std::pair<int, std::vector<Point> > > t_own;
   for(int k = 0; k < t_holes; ++k) {
     const int i = int(rng.below(std::uint64_t(n))), i1 = (i + 1) % n;
@@ -951,7 +952,10 @@ Split star_split(pma_test::random_detail::Rng& rng, int n, int edges, bool hole,
     used.push_back(t);
     W[std::size_t(i)] = p;
     W[std::size_t(i1)] = q;
-    t_own.emplace_back(i, std::vector<Point>{m, polar(0.85 * r, t + 0.02), polar(0.85 * r, t - 0.02)});
+    auto inward = [&](double f) {
+      return Point(0.85 * (p.x() + f * (q.x() - p.x())), 0.85 * (p.y() + f * (q.y() - p.y())));
+    };
+    t_own.emplace_back(i, std::vector<Point>{m, inward(0.45), inward(0.55)});
   }
   // (with a one-edge diagonal part a is the triangle beyond it)
   auto in_a = [&](double t) { return (hole || edges > 1) && t > ta && t < tb; };
@@ -1194,10 +1198,12 @@ void union_tests(Checker<Traits>& checker, const Options& o)
   }
   // T's (a vertex inside an edge; data/union/README.md): in a part (merged;
   // the union is noded there), in the union only, and on an edge that one
-  // part splits and the other shares whole (both computed in one shot)
+  // part splits and the other shares whole, also where that other part has
+  // T's too, and both ways (all computed in one shot)
   std::size_t ts = 0;
   for(const auto& t : std::vector<std::pair<std::string, std::size_t> >{
-          {"t_notch", 0}, {"t_two_holes", 0}, {"t_both_sides", 0}, {"t_union", 1}, {"t_shared", 1}}) {
+          {"t_notch", 0}, {"t_two_holes", 0}, {"t_both_sides", 0}, {"t_union", 1}, {"t_shared", 1}, {"t_shared_both", 1},
+          {"t_shared_crossed", 1}}) {
     const std::string f = std::string(PMA_TEST_DATA) + "/union/" + t.first;
     const MA a = axis(pma_tool::read_polygon_file<Point>(f + "_a.wkt")), b = axis(pma_tool::read_polygon_file<Point>(f + "_b.wkt"));
     for(int order = 0; order < 2; ++order) {
@@ -1236,11 +1242,6 @@ void union_tests(Checker<Traits>& checker, const Options& o)
   expect_error(square(0, 0, 2), Rings{{Point(2, 0), Point(2, 2), Point(1, 1)}}, "overlap");   // an edge in the same direction
   expect_error(square(0, 0, 2), Rings{{Point(2, 2), Point(2, 0), Point(3, 0), Point(3, 3), Point(1, 3), Point(1, 1.5)}},
                "not a valid polygon");   // shares an edge, and crosses the square's top edge
-  // a T on a shared edge (a's hole touches it), and a T in b as well
-  expect_error(Rings{{Point(0, 0), Point(4, 0), Point(4, 4), Point(0, 4)}, {Point(4, 2), Point(2, 1), Point(2, 3)}},
-               Rings{{Point(4, 0), Point(6, 0), Point(6, 4), Point(4, 4)}, {Point(6, 2), Point(5, 1.5), Point(5, 2.5)}},
-               "not supported yet: a union where a vertex lies inside a shared edge (the first polygon ring 1 vertex 0 lies "
-               "inside the edge from the first polygon ring 0 vertex 1, which the second polygon has whole)");
   {
     // step 0 of a hexagon: one triangle of it
     CGAL::Progressive_medial_axis_2<Traits> p(Rings{{Point(0, 0), Point(1, -1), Point(2, 0), Point(2, 1), Point(1, 2), Point(0, 1)}});

@@ -188,7 +188,8 @@ void boundary_evolution(const std::string& data)
 void union_of_two(const std::string& data)
 {
   const std::string d = data + "/union/";
-  for(const char* p : {"star", "ring", "chain2", "chain40", "hole_filled", "t_notch", "t_both_sides", "t_union", "t_shared"}) {
+  for(const char* p : {"star", "ring", "chain2", "chain40", "hole_filled", "t_notch", "t_both_sides", "t_union", "t_shared",
+                        "t_shared_crossed"}) {
     pairs_against_oracle(d + p + "_a.wkt", {-1}, "--union " + d + p + "_b.wkt");
     pairs_against_oracle(d + p + "_b.wkt", {-1}, "--union " + d + p + "_a.wkt");
   }
@@ -204,7 +205,8 @@ void union_of_two(const std::string& data)
           r.out.find("\nunion_chains 1\n") != std::string::npos && r.out.find("\nunion_shared_edges 4\n") != std::string::npos,
         "--union --stats of a hole filled: " << r.out << r.err);
   // T's: in a part (merged), in the union only, and on a shared edge (both in one shot)
-  for(const auto& t : std::vector<std::pair<std::string, int> >{{"t_notch", 0}, {"t_union", 1}, {"t_shared", 1}}) {
+  for(const auto& t : std::vector<std::pair<std::string, int> >{{"t_notch", 0}, {"t_union", 1}, {"t_shared", 1},
+                                                                 {"t_shared_crossed", 1}}) {
     r = run(tool + " --stats --union " + d + t.first + "_b.wkt " + d + t.first + "_a.wkt");
     CHECK(r.status == 0 && r.out.find("\nunion_recomputed " + std::to_string(t.second) + "\n") != std::string::npos &&
             r.out.find("\nanomalies 0\n") != std::string::npos,

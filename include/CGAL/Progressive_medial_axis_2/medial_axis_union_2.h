@@ -69,9 +69,7 @@ and the merges go on as usual.
 
 Throws `Progressive_medial_axes::Input_error`, with one line naming the
 problem, when an axis is not the axis of a whole polygon, when the polygons
-share no edge, when they overlap, or when the union is not a valid polygon;
-and, as "not supported yet", for a T on a shared edge of a polygon that has
-T's of its own too.
+share no edge, when they overlap, or when the union is not a valid polygon.
 
 \tparam Traits a model of `ProgressiveMedialAxisTraits_2` whose kernel is `K`.
 */

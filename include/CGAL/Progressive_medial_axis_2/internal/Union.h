@@ -63,8 +63,9 @@
 // that neither polygon has but the union has (a vertex of one polygon inside
 // an edge of the other that is not shared) is not merged either: the cells
 // of that edge would have to be split.  Such a union is computed in one shot
-// too.  An edge that one polygon splits and the other has whole (a T on a
-// shared edge) is an error, "not supported yet".
+// too, and so is one where a polygon splits an edge that the other has whole
+// (a T on a shared edge): the union is then traced with a copy of the other
+// polygon noded there.
 //
 // Where the merges meet an anomaly (a bug; none on any shape tried), or
 // where a ring is shared as a whole or the union has a T of its own (above),
@@ -307,54 +308,66 @@ private:
     if(chains_.size() > cyclic_from) one_shot_needed_ = true;
   }
 
-  // An edge that one polygon splits at a T of its own (see corners()) and
-  // that the other polygon has whole, reversed: a T on a shared edge.  The
-  // two do not share that edge edge for edge.  The union is found with a
-  // copy of the other polygon noded there (the place added to the edge as a
-  // vertex; in_[y] then points to that copy, and messages name its
-  // vertices), and its axis computed in one shot: the merges would have to
-  // split that edge's cell.  (The halves of a split edge keep its input
-  // edge; at a T the corners' outgoing edges are re-linked, so an added
-  // corner need not start a half of the edge it splits: the halves are found
-  // by their ends.)
+  // Calls f(edge_ring, edge_index, from, to, c) for each half of an input
+  // edge that polygon x splits at a T of its own (see corners()): the edge
+  // as written, its ends in the direction of x's interior, and the corner at
+  // the T's place.  (The halves of a split edge keep its input edge; at a T
+  // the corners' outgoing edges are re-linked, so an added corner need not
+  // start a half of the edge it splits: the halves are found by their ends.)
+  template <class F>
+  void for_each_split_half(int x, const F& f) const
+  {
+    const Data& d = *in_[x];
+    if(corners(x) == d.ring_start.back()) return;
+    for(int k = 0; k < corners(x); ++k) {
+      const Point_info& i = d.info[std::size_t(k)];
+      const int base = d.ring_start[std::size_t(i.edge_ring)], m = d.ring_start[std::size_t(i.edge_ring) + 1] - base;
+      int from = base + i.edge_index, to = base + (i.edge_index + 1) % m;
+      if(d.info[std::size_t(base)].reversed) std::swap(from, to);
+      const bool split_at_k = !(place(x, k) == place(x, from));
+      if(!split_at_k && place(x, next(x, k)) == place(x, to)) continue;
+      f(i.edge_ring, i.edge_index, from, to, split_at_k ? k : next(x, k));
+    }
+  }
+
+  // An edge that one polygon splits at a T of its own and that the other
+  // polygon has whole, reversed: a T on a shared edge.  The two do not share
+  // that edge edge for edge.  The union is found with a copy of the other
+  // polygon noded there (the place added to the edge as a vertex), and at
+  // its own T's too (as a polygon's own T's are in a merged union; a copy
+  // has no split edges, see set_points()); in_[y] then points to that copy,
+  // and messages name its vertices.  Its axis is computed in one shot: the
+  // merges would have to split that edge's cell.
   void node_split_shared_edges()
   {
     // for each polygon y, the places to add inside its edges: (ring, written index of the edge) -> places
     std::map<std::pair<int, int>, std::vector<Point_2> > add[2];
-    std::string first[2];   // the first such T, for a message
+    auto node = [&](int y, int edge_ring, int edge_index, const Point_2& t) {
+      std::vector<Point_2>& at = add[y][std::make_pair(edge_ring, edge_index)];
+      if(std::find(at.begin(), at.end(), t) == at.end()) at.push_back(t);
+    };
     for(int x = 0; x < 2; ++x) {
-      const Data& d = *in_[x];
       const int y = 1 - x;
-      if(corners(x) == d.ring_start.back()) continue;
       std::unordered_multimap<std::array<double, 4>, int, Edge_key_hash> edges_y;
-      edges_y.reserve(std::size_t(corners(y)));
-      for(int m = 0; m < corners(y); ++m) edges_y.emplace(key(place(y, m), place(y, next(y, m))), m);
-      for(int k = 0; k < corners(x); ++k) {
-        // the input edge that the edge from k is (a half of), in the direction of x's interior
-        const Point_info& i = d.info[std::size_t(k)];
-        const int base = d.ring_start[std::size_t(i.edge_ring)], m = d.ring_start[std::size_t(i.edge_ring) + 1] - base;
-        int from = base + i.edge_index, to = base + (i.edge_index + 1) % m;
-        if(d.info[std::size_t(base)].reversed) std::swap(from, to);
+      for_each_split_half(x, [&](int, int, int from, int to, int c) {
+        if(edges_y.empty())
+          for(int m = 0; m < corners(y); ++m) edges_y.emplace(key(place(y, m), place(y, next(y, m))), m);
         const Point_2 &p = place(x, from), &q = place(x, to);
-        const bool split_at_k = !(place(x, k) == p);
-        if(!split_at_k && place(x, next(x, k)) == q) continue;
         auto range = edges_y.equal_range(key(q, p));
         for(auto it = range.first; it != range.second; ++it)
           if(place(y, it->second) == q && place(y, next(y, it->second)) == p) {
             const Point_info& e = in_[y]->info[std::size_t(it->second)];
-            std::vector<Point_2>& at = add[y][std::make_pair(e.edge_ring, e.edge_index)];
-            const int c = split_at_k ? k : next(x, k);
-            if(first[y].empty()) first[y] = where(x, c) + " lies inside the edge from " + where(x, from);
-            if(std::find(at.begin(), at.end(), place(x, c)) == at.end()) at.push_back(place(x, c));
+            node(y, e.edge_ring, e.edge_index, place(x, c));
           }
-      }
+      });
+    }
+    for(int y = 0; y < 2; ++y) {
+      if(add[y].empty()) continue;
+      for_each_split_half(y, [&](int edge_ring, int edge_index, int, int, int c) { node(y, edge_ring, edge_index, place(y, c)); });
     }
     for(int y = 0; y < 2; ++y) {
       if(add[y].empty()) continue;
       const Data& d = *in_[y];
-      if(corners(y) != d.ring_start.back())
-        throw Input_error("not supported yet: a union where a vertex lies inside a shared edge (" + first[y] + ", which " +
-                          name(y) + " has whole) and " + name(y) + " has a vertex inside an edge too");
       std::vector<std::vector<Point_2> > rings;
       for(std::size_t r = 0; r + 1 < d.ring_start.size(); ++r) {
         const int base = d.ring_start[r], m = d.ring_start[r + 1] - base;
