@@ -189,7 +189,7 @@ void union_of_two(const std::string& data)
 {
   const std::string d = data + "/union/";
   for(const char* p : {"star", "ring", "chain2", "chain40", "hole_filled", "t_notch", "t_both_sides", "t_union", "t_shared",
-                        "t_shared_crossed"}) {
+                        "t_shared_crossed", "t_shared_two_places", "touch_at_smallest"}) {
     pairs_against_oracle(d + p + "_a.wkt", {-1}, "--union " + d + p + "_b.wkt");
     pairs_against_oracle(d + p + "_b.wkt", {-1}, "--union " + d + p + "_a.wkt");
   }

@@ -331,13 +331,13 @@ private:
   }
 
   // An edge that one polygon splits at a T of its own and that the other
-  // polygon has whole, reversed: a T on a shared edge.  The two do not share
-  // that edge edge for edge.  The union is found with a copy of the other
-  // polygon noded there (the place added to the edge as a vertex), and at
-  // its own T's too (as a polygon's own T's are in a merged union; a copy
-  // has no split edges, see set_points()); in_[y] then points to that copy,
-  // and messages name its vertices.  Its axis is computed in one shot: the
-  // merges would have to split that edge's cell.
+  // polygon has whole, reversed, or splits at other places: a T on a shared
+  // edge.  The two do not share that edge edge for edge.  The union is found
+  // with a copy of the other polygon noded there (the place added to the
+  // edge as a vertex), and at its own T's too (as a polygon's own T's are in
+  // a merged union; a copy has no split edges, see set_points()); in_[y]
+  // then points to that copy, and messages name its vertices.  Its axis is
+  // computed in one shot: the merges would have to split that edge's cell.
   void node_split_shared_edges()
   {
     // for each polygon y, the places to add inside its edges: (ring, written index of the edge) -> places
@@ -346,24 +346,52 @@ private:
       std::vector<Point_2>& at = add[y][std::make_pair(edge_ring, edge_index)];
       if(std::find(at.begin(), at.end(), t) == at.end()) at.push_back(t);
     };
+    // each polygon's split input edges: (ring, written index) -> its ends (in
+    // the direction of the interior) and the places of its T's
+    struct Split_edge {
+      int from, to;
+      std::vector<Point_2> at;
+    };
+    std::map<std::pair<int, int>, Split_edge> split[2];
+    for(int x = 0; x < 2; ++x)
+      for_each_split_half(x, [&](int edge_ring, int edge_index, int from, int to, int c) {
+        Split_edge& e = split[x].emplace(std::make_pair(edge_ring, edge_index), Split_edge{from, to, {}}).first->second;
+        if(std::find(e.at.begin(), e.at.end(), place(x, c)) == e.at.end()) e.at.push_back(place(x, c));
+      });
+    // the other polygon's input edge with the same ends, reversed, is noded at
+    // the T's it does not have (whether it is split elsewhere or not)
     for(int x = 0; x < 2; ++x) {
       const int y = 1 - x;
-      std::unordered_multimap<std::array<double, 4>, int, Edge_key_hash> edges_y;
-      for_each_split_half(x, [&](int, int, int from, int to, int c) {
-        if(edges_y.empty())
-          for(int m = 0; m < corners(y); ++m) edges_y.emplace(key(place(y, m), place(y, next(y, m))), m);
-        const Point_2 &p = place(x, from), &q = place(x, to);
+      if(split[x].empty()) continue;
+      std::unordered_multimap<std::array<double, 4>, std::pair<int, int>, Edge_key_hash> edges_y;   // y's input edges by their ends
+      const Data& dy = *in_[y];
+      for(std::size_t r = 0; r + 1 < dy.ring_start.size(); ++r) {
+        const int base = dy.ring_start[r], m = dy.ring_start[r + 1] - base;
+        for(int i = 0; i < m; ++i) {
+          int from = base + i, to = base + (i + 1) % m;
+          if(dy.info[std::size_t(base)].reversed) std::swap(from, to);
+          edges_y.emplace(key(place(y, from), place(y, to)), std::make_pair(int(r), i));
+        }
+      }
+      for(const auto& se : split[x]) {
+        const Point_2 &p = place(x, se.second.from), &q = place(x, se.second.to);
         auto range = edges_y.equal_range(key(q, p));
-        for(auto it = range.first; it != range.second; ++it)
-          if(place(y, it->second) == q && place(y, next(y, it->second)) == p) {
-            const Point_info& e = in_[y]->info[std::size_t(it->second)];
-            node(y, e.edge_ring, e.edge_index, place(x, c));
-          }
-      });
+        for(auto it = range.first; it != range.second; ++it) {
+          const int base = dy.ring_start[std::size_t(it->second.first)], m = dy.ring_start[std::size_t(it->second.first) + 1] - base;
+          int from = base + it->second.second, to = base + (it->second.second + 1) % m;
+          if(dy.info[std::size_t(base)].reversed) std::swap(from, to);
+          if(!(place(y, from) == q && place(y, to) == p)) continue;
+          auto other = split[y].find(it->second);
+          for(const Point_2& t : se.second.at)
+            if(other == split[y].end() || std::find(other->second.at.begin(), other->second.at.end(), t) == other->second.at.end())
+              node(y, it->second.first, it->second.second, t);
+        }
+      }
     }
-    for(int y = 0; y < 2; ++y) {
+    for(int y = 0; y < 2; ++y) {   // a noded copy is noded at its own T's too
       if(add[y].empty()) continue;
-      for_each_split_half(y, [&](int edge_ring, int edge_index, int, int, int c) { node(y, edge_ring, edge_index, place(y, c)); });
+      for(const auto& se : split[y])
+        for(const Point_2& t : se.second.at) node(y, se.first.first, se.first.second, t);
     }
     for(int y = 0; y < 2; ++y) {
       if(add[y].empty()) continue;
@@ -506,10 +534,10 @@ private:
   // ring of its own, a hole.  A loop that runs counter-clockwise (a lobe of a
   // pinched union) stays in its cycle: one polygon has no other form for it.
   // Each cycle is walked from its smallest place, which lies on its outer
-  // side (its convex hull) and is passed once, or the cycle is left as it
-  // is; a stack holds the walk with the loops taken out, and the sums of its
-  // edges' cross products give each loop's area, exactly (for points of
-  // doubles).  Linear in the size of the cycles that pass a place twice.
+  // side (its convex hull); a stack holds the walk with the loops taken out,
+  // and the sums of its edges' cross products give each loop's area,
+  // exactly (for points of doubles).  Linear in the size of the cycles that
+  // pass a place twice, but for places passed many times.
   void split_clockwise_loops(std::vector<std::vector<int> >& cycles) const
   {
     typedef std::array<double, 2> Key;
@@ -537,9 +565,23 @@ private:
       if(!twice) continue;
       std::vector<int> c = cycles[i];
       std::rotate(c.begin(), std::min_element(c.begin(), c.end(), [&](int u, int v) { return smaller(group_place(u), group_place(v)); }), c.end());
-      std::size_t passes = 0;
-      for(int g : c) passes += group_place(g) == group_place(c[0]);
-      if(passes > 1) continue;
+      std::vector<std::size_t> passes;   // of the smallest place
+      for(std::size_t k = 0; k < c.size(); ++k)
+        if(group_place(c[k]) == group_place(c[0])) passes.push_back(k);
+      if(passes.size() > 1) {
+        // A hole touches the cycle at its smallest place: the walk between
+        // two passes of it is a loop.  Start where a counter-clockwise one
+        // ends, so that it comes last, and stays; the others are taken out.
+        for(std::size_t a = 0; a < passes.size(); ++a) {
+          const std::size_t b = a + 1 < passes.size() ? passes[a + 1] : c.size();
+          CGAL::Exact_rational twice_area = 0;
+          for(std::size_t k = passes[a]; k < b; ++k) twice_area += cross(c[k], c[(k + 1) % c.size()]);
+          if(CGAL::is_positive(twice_area)) {
+            std::rotate(c.begin(), c.begin() + std::ptrdiff_t(b % c.size()), c.end());
+            break;
+          }
+        }
+      }
       at.clear();
       std::vector<int> stack;
       std::vector<CGAL::Exact_rational> sum;   // sum[t]: cross products of the stack's edges up to stack[t]
