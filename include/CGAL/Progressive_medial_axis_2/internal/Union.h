@@ -197,10 +197,11 @@ public:
   }
 
   /// Whether the merges cannot give the union's axis: where a ring is
-  /// shared as a whole (one polygon fills a hole of the other exactly), or
+  /// shared as a whole (one polygon fills a hole of the other exactly),
   /// where a vertex of the union lies inside an edge of the union (a T that
-  /// neither polygon has: the merged cells of that edge would have to be
-  /// split there).  run() then validates the union but merges nothing and
+  /// neither polygon has), or where a polygon splits a shared edge at a T
+  /// that the other does not have (see node_split_shared_edges()): the
+  /// merged cells of that edge would have to be split there.  run() then validates the union but merges nothing and
   /// returns null, and the caller computes the union's axis in one shot of
   /// rings().
   bool one_shot_needed() const { return one_shot_needed_; }
@@ -308,6 +309,16 @@ private:
     if(chains_.size() > cyclic_from) one_shot_needed_ = true;
   }
 
+  // The ends of input edge `index` of ring `ring` of polygon x (as written),
+  // in the direction of x's interior.
+  std::pair<int, int> input_edge_ends(int x, int ring, int index) const
+  {
+    const Data& d = *in_[x];
+    const int base = d.ring_start[std::size_t(ring)], m = d.ring_start[std::size_t(ring) + 1] - base;
+    const int from = base + index, to = base + (index + 1) % m;
+    return d.info[std::size_t(base)].reversed ? std::make_pair(to, from) : std::make_pair(from, to);
+  }
+
   // Calls f(edge_ring, edge_index, from, to, c) for each half of an input
   // edge that polygon x splits at a T of its own (see corners()): the edge
   // as written, its ends in the direction of x's interior, and the corner at
@@ -321,9 +332,8 @@ private:
     if(corners(x) == d.ring_start.back()) return;
     for(int k = 0; k < corners(x); ++k) {
       const Point_info& i = d.info[std::size_t(k)];
-      const int base = d.ring_start[std::size_t(i.edge_ring)], m = d.ring_start[std::size_t(i.edge_ring) + 1] - base;
-      int from = base + i.edge_index, to = base + (i.edge_index + 1) % m;
-      if(d.info[std::size_t(base)].reversed) std::swap(from, to);
+      const std::pair<int, int> e = input_edge_ends(x, i.edge_ring, i.edge_index);
+      const int from = e.first, to = e.second;
       const bool split_at_k = !(place(x, k) == place(x, from));
       if(!split_at_k && place(x, next(x, k)) == place(x, to)) continue;
       f(i.edge_ring, i.edge_index, from, to, split_at_k ? k : next(x, k));
@@ -365,22 +375,17 @@ private:
       if(split[x].empty()) continue;
       std::unordered_multimap<std::array<double, 4>, std::pair<int, int>, Edge_key_hash> edges_y;   // y's input edges by their ends
       const Data& dy = *in_[y];
-      for(std::size_t r = 0; r + 1 < dy.ring_start.size(); ++r) {
-        const int base = dy.ring_start[r], m = dy.ring_start[r + 1] - base;
-        for(int i = 0; i < m; ++i) {
-          int from = base + i, to = base + (i + 1) % m;
-          if(dy.info[std::size_t(base)].reversed) std::swap(from, to);
-          edges_y.emplace(key(place(y, from), place(y, to)), std::make_pair(int(r), i));
+      for(int r = 0; r + 1 < int(dy.ring_start.size()); ++r)
+        for(int i = 0; i < dy.ring_start[std::size_t(r) + 1] - dy.ring_start[std::size_t(r)]; ++i) {
+          const std::pair<int, int> e = input_edge_ends(y, r, i);
+          edges_y.emplace(key(place(y, e.first), place(y, e.second)), std::make_pair(r, i));
         }
-      }
       for(const auto& se : split[x]) {
         const Point_2 &p = place(x, se.second.from), &q = place(x, se.second.to);
         auto range = edges_y.equal_range(key(q, p));
         for(auto it = range.first; it != range.second; ++it) {
-          const int base = dy.ring_start[std::size_t(it->second.first)], m = dy.ring_start[std::size_t(it->second.first) + 1] - base;
-          int from = base + it->second.second, to = base + (it->second.second + 1) % m;
-          if(dy.info[std::size_t(base)].reversed) std::swap(from, to);
-          if(!(place(y, from) == q && place(y, to) == p)) continue;
+          const std::pair<int, int> e = input_edge_ends(y, it->second.first, it->second.second);
+          if(!(place(y, e.first) == q && place(y, e.second) == p)) continue;
           auto other = split[y].find(it->second);
           for(const Point_2& t : se.second.at)
             if(other == split[y].end() || std::find(other->second.at.begin(), other->second.at.end(), t) == other->second.at.end())
