@@ -1235,7 +1235,7 @@ void union_tests(Checker<Traits>& checker, const Options& o)
   for(const T_case& t : std::vector<T_case>{{"t_notch", 0, 2},
                                             {"t_two_holes", 0, 3},
                                             {"t_both_sides", 0, 3},
-                                            {"t_union", 1, 1},   // (its own T is not noded: one ring touching its edge)
+                                            {"t_union", 1, 2},   // (its own T noded: the loop there is a hole)
                                             {"t_shared", 1, 2},
                                             {"t_shared_both", 1, 3},
                                             {"t_shared_crossed", 1, 3},
@@ -1257,6 +1257,58 @@ void union_tests(Checker<Traits>& checker, const Options& o)
       }
       ++ts;
     }
+  }
+  // T's that only the union has, at random: part a lies below the line
+  // y = 0 with its top edge from q = (1, 0) to r = (-1, 0), part b to the
+  // right of a's right side (the shared chain) and above that edge, where it
+  // comes down in notches whose tips touch the edge at points inside it (a
+  // vertex of b inside an edge of a that is not shared).  The union's ring
+  // touches its own edge at each tip: the union is noded there, and each
+  // loop between two tips, or between the last tip and q, is a hole, as OGC
+  // has it; its axis is computed in one shot of that union polygon.
+  std::size_t union_ts = 0;
+  for(int seed = 0; seed < (o.quick ? 10 : 40); ++seed) {
+    pma_test::random_detail::Rng rng(std::uint64_t(seed) * 7727 + 3 + o.seed_base);
+    const double pi = pma_test::random_detail::pi, d = rng.uniform(0.3, 0.6);
+    auto snap = [](double v) { return std::ldexp(std::round(std::ldexp(v, 10)), -10); };
+    std::vector<Point> A{Point(-1, 0)}, B{Point(1, 0)};
+    const int lower = 2 + int(rng.below(8)), chain = 1 + int(rng.below(5));
+    for(int k = 0; k < lower; ++k) {
+      const double t = pi + 0.1 + (pi - 0.7) * (k + rng.uniform(0.1, 0.9)) / lower, radius = rng.uniform(0.5, 1);
+      A.push_back(Point(radius * std::cos(t), radius * std::sin(t)));
+    }
+    std::vector<Point> right;   // the shared chain, from s = (1, -d) up to q (excluded)
+    for(int k = 0; k < chain; ++k) right.push_back(Point(k == 0 ? 1 : snap(1 + rng.uniform(0, 0.05)), snap(-d * (chain - k) / chain)));
+    A.insert(A.end(), right.begin(), right.end());
+    A.push_back(Point(1, 0));
+    B.insert(B.end(), right.rbegin(), right.rend());
+    const double sy = right.front().y();
+    for(const Point& p : {Point(2, sy), Point(2, 1), Point(-1.2, 1), Point(-1.2, 0.5)}) B.push_back(p);
+    const int tips = 1 + int(rng.below(3));
+    for(int k = 0; k < tips; ++k) {   // tips in (-0.8, 0.8), 1.6 / tips apart
+      const double m = snap(-0.8 + 1.6 * (k + rng.uniform(0.3, 0.7)) / tips), w = 0.25 / tips;
+      for(const Point& p : {Point(m - w, 0.5), Point(m, 0), Point(m + w, 0.5)}) B.push_back(p);
+    }
+    B.push_back(Point(1, 0.5));
+    const std::string name = "union with " + std::to_string(tips) + " T's of its own, seed " + std::to_string(seed);
+    try {
+      CGAL::Progressive_medial_axes::Medial_axis_union_statistics stats;
+      const MA ma = axis(Rings{A}), mb = axis(Rings{B});
+      const MA u = seed % 2 ? CGAL::medial_axis_union_2(mb, ma, Traits(), &stats) : CGAL::medial_axis_union_2(ma, mb, Traits(), &stats);
+      const Rings r = rings_of(u);
+      bool twice = false;   // (OGC: no ring passes a place twice)
+      for(std::vector<Point> ring : r) {
+        std::sort(ring.begin(), ring.end());
+        twice = twice || std::adjacent_find(ring.begin(), ring.end()) != ring.end();
+      }
+      CHECK(stats.recomputed == 1 && r.size() == std::size_t(1 + tips) && !twice,
+            name << ": recomputed " << stats.recomputed << ", " << r.size() << " rings" << (twice ? ", a ring passes a place twice" : "")
+                 << "\n  a: " << wkt(Rings{A}) << "\n  b: " << wkt(Rings{B}));
+      checker.compare(u, "union", true, name, r);
+    } catch(const std::exception& e) {
+      CHECK(false, name << ": " << e.what() << "\n  a: " << wkt(Rings{A}) << "\n  b: " << wkt(Rings{B}));
+    }
+    ++union_ts;
   }
   // the errors
   auto square = [](double x, double y, double d) {
@@ -1287,7 +1339,8 @@ void union_tests(Checker<Traits>& checker, const Options& o)
     CHECK(what.find("not the axis of a whole polygon") != std::string::npos, "union with a progressive step: '" << what << "'");
   }
   std::cout << "union: " << count << " splits (" << with_t << " with T's, " << t_shared << " with one on the shared edge), " << filled << " holes filled exactly, " << diagonals
-            << " outlines split along a diagonal, " << grids << " grid skylines, " << ts << " unions with T's\n";
+            << " outlines split along a diagonal, " << grids << " grid skylines, " << ts << " unions with T's, " << union_ts
+            << " with T's of their own\n";
 }
 
 template <class Traits>

@@ -65,7 +65,11 @@ the union instead of the local merges:
 
 Where a polygon has a T of its own, the union's ring through the edge gets
 the place as a vertex (the union is noded there, as GEOS's overlays are),
-and the merges go on as usual.
+and the merges go on as usual.  A T that only the union has is noded too:
+where the union's ring touched its own edge there, the clockwise loop
+between its two passes of the place becomes a hole (OGC's form).  Such a
+ring then starts at its first vertex of before, or, for a loop split off,
+at its first vertex in the order of that ring.
 
 Throws `Progressive_medial_axes::Input_error`, with one line naming the
 problem, when an axis is not the axis of a whole polygon, when the polygons

@@ -181,6 +181,14 @@ public:
     for(const auto& ve : m_on_edges) r.emplace_back(int(ring_of(ve.first)), int(local(ve.first)));
     return r;
   }
+  /// After `run()`: the edges that those vertices lie inside, in the same
+  /// order, each as the (ring, index) of its first vertex.
+  std::vector<std::pair<int, int> > edges_with_vertices() const
+  {
+    std::vector<std::pair<int, int> > r;
+    for(const auto& ve : m_on_edges) r.emplace_back(int(ring_of(ve.second)), int(local(ve.second)));
+    return r;
+  }
 
 private:
   // ---------------------------------------------------------------- helpers
@@ -857,15 +865,19 @@ void validate_polygon_rings(const Rings<typename Kernel::Point_2>& rings)
 namespace internal {
 
 // validate_polygon(), returning whether a vertex lies inside an edge (a T),
-// and with `on_edges`, which ones (as (ring, index) pairs).
+// with `on_edges`, which ones (as (ring, index) pairs; a vertex may be listed
+// more than once), and with `edges`, the edges they lie inside (in the same
+// order, by the (ring, index) of the edge's first vertex).
 template <class Point_2>
 bool validate_and_find_vertices_on_edges(const Rings<Point_2>& rings,
-                                         std::vector<std::pair<int, int> >* on_edges = nullptr)
+                                         std::vector<std::pair<int, int> >* on_edges = nullptr,
+                                         std::vector<std::pair<int, int> >* edges = nullptr)
 {
   typedef typename Kernel_traits<Point_2>::Kernel K;
   typedef Exact_predicates_kernel_for<K> EK;
   auto finish = [&](const auto& validator) {
     if(on_edges) *on_edges = validator.vertices_on_edges();
+    if(edges) *edges = validator.edges_with_vertices();
     return validator.has_vertices_on_edges();
   };
   if constexpr(std::is_same<typename EK::type, K>::value) {

@@ -62,10 +62,11 @@
 // overlays are; the edge ids of that ring after it are one higher).  A T
 // that neither polygon has but the union has (a vertex of one polygon inside
 // an edge of the other that is not shared) is not merged either: the cells
-// of that edge would have to be split.  Such a union is computed in one shot
-// too, and so is one where a polygon splits an edge that the other has whole
-// (a T on a shared edge): the union is then traced with a copy of the other
-// polygon noded there.
+// of that edge would have to be split.  The union polygon is noded there
+// (and a ring that touched its own edge there split into OGC's form, see
+// build_points()), and its axis computed in one shot.  So is a union where
+// a polygon splits an edge that the other has whole (a T on a shared edge):
+// the union is then traced with a copy of the other polygon noded there.
 //
 // Where the merges meet an anomaly (a bug; none on any shape tried), or
 // where a ring is shared as a whole or the union has a T of its own (above),
@@ -402,27 +403,38 @@ private:
       if(add[y].empty()) continue;
       const Data& d = *in_[y];
       std::vector<std::vector<Point_2> > rings;
-      for(std::size_t r = 0; r + 1 < d.ring_start.size(); ++r) {
-        const int base = d.ring_start[r], m = d.ring_start[r + 1] - base;
-        rings.emplace_back();
-        for(int i = 0; i < m; ++i) {
-          const Point_2& b = d.points[std::size_t(base + (i + 1) % m)];
-          rings.back().push_back(d.points[std::size_t(base + i)]);
-          auto it = add[y].find(std::make_pair(int(r), i));
-          if(it == add[y].end()) continue;
-          std::vector<Point_2> at = it->second;   // in order along the edge, from a to b
-          std::sort(at.begin(), at.end(), [&](const Point_2& u, const Point_2& v) {
-            return Kernel().collinear_are_strictly_ordered_along_line_2_object()(u, v, b);
-          });
-          rings.back().insert(rings.back().end(), at.begin(), at.end());
-        }
-      }
+      for(std::size_t r = 0; r + 1 < d.ring_start.size(); ++r)
+        rings.emplace_back(d.points.begin() + d.ring_start[r], d.points.begin() + d.ring_start[r + 1]);
       noded_[y] = std::make_shared<Data>();
-      set_points(*noded_[y], rings, traits_.orientation_2_object());
+      set_points(*noded_[y], with_nodes(rings, add[y]), traits_.orientation_2_object());
       in_[y] = noded_[y].get();
       prev_[y].clear();
       one_shot_needed_ = true;
     }
+  }
+
+  // `rings` with places added inside their edges: `add` maps an edge (the
+  // ring and index of its first vertex) to places inside it, in any order.
+  static std::vector<std::vector<Point_2> > with_nodes(const std::vector<std::vector<Point_2> >& rings,
+                                                       const std::map<std::pair<int, int>, std::vector<Point_2> >& add)
+  {
+    std::vector<std::vector<Point_2> > noded;
+    for(std::size_t r = 0; r < rings.size(); ++r) {
+      const std::size_t m = rings[r].size();
+      noded.emplace_back();
+      for(std::size_t i = 0; i < m; ++i) {
+        const Point_2& b = rings[r][(i + 1) % m];
+        noded.back().push_back(rings[r][i]);
+        auto it = add.find(std::make_pair(int(r), int(i)));
+        if(it == add.end()) continue;
+        std::vector<Point_2> at = it->second;   // in order along the edge, towards b
+        std::sort(at.begin(), at.end(), [&](const Point_2& u, const Point_2& v) {
+          return Kernel().collinear_are_strictly_ordered_along_line_2_object()(u, v, b);
+        });
+        noded.back().insert(noded.back().end(), at.begin(), at.end());
+      }
+    }
+    return noded;
   }
 
   int prev(int x, int k) const
@@ -501,7 +513,7 @@ private:
         cycles.back().push_back(h);
       }
     }
-    split_clockwise_loops(cycles);
+    split_clockwise_loops(cycles, [&](int g) -> const Point_2& { return group_place(g); });
     std::vector<char> ccw(cycles.size());
     for(std::size_t i = 0; i < cycles.size(); ++i) ccw[i] = counterclockwise(cycles[i]);
     // the outer ring: the counter-clockwise cycle with the smallest point
@@ -543,16 +555,19 @@ private:
   // and the sums of its edges' cross products give each loop's area,
   // exactly (for points of doubles).  Linear in the size of the cycles that
   // pass a place twice, but for places passed many times.
-  void split_clockwise_loops(std::vector<std::vector<int> >& cycles) const
+  //
+  // `place(i)` is the place of element i of a cycle.
+  template <class Place>
+  void split_clockwise_loops(std::vector<std::vector<int> >& cycles, const Place& place) const
   {
     typedef std::array<double, 2> Key;
     struct Key_hash {
       std::size_t operator()(const Key& k) const { return std::hash<double>()(k[0]) * 1000003u ^ std::hash<double>()(k[1]); }
     };
-    auto key_of = [&](int g) { return Key{{CGAL::to_double(group_place(g).x()), CGAL::to_double(group_place(g).y())}}; };
+    auto key_of = [&](int g) { return Key{{CGAL::to_double(place(g).x()), CGAL::to_double(place(g).y())}}; };
     // (the type named: with gmpxx an expression would refer to dead temporaries)
     auto cross = [&](int u, int v) -> CGAL::Exact_rational {
-      const Point_2 &p = group_place(u), &q = group_place(v);
+      const Point_2 &p = place(u), &q = place(v);
       return CGAL::Exact_rational(CGAL::to_double(p.x())) * CGAL::Exact_rational(CGAL::to_double(q.y())) -
              CGAL::Exact_rational(CGAL::to_double(p.y())) * CGAL::Exact_rational(CGAL::to_double(q.x()));
     };
@@ -564,15 +579,15 @@ private:
       for(std::size_t k = 0; k < cycles[i].size(); ++k) {
         const int g = cycles[i][k];
         auto range = at.equal_range(key_of(g));
-        for(auto it = range.first; it != range.second && !twice; ++it) twice = group_place(cycles[i][it->second]) == group_place(g);
+        for(auto it = range.first; it != range.second && !twice; ++it) twice = place(cycles[i][it->second]) == place(g);
         at.emplace(key_of(g), k);
       }
       if(!twice) continue;
       std::vector<int> c = cycles[i];
-      std::rotate(c.begin(), std::min_element(c.begin(), c.end(), [&](int u, int v) { return smaller(group_place(u), group_place(v)); }), c.end());
+      std::rotate(c.begin(), std::min_element(c.begin(), c.end(), [&](int u, int v) { return smaller(place(u), place(v)); }), c.end());
       std::vector<std::size_t> passes;   // of the smallest place
       for(std::size_t k = 0; k < c.size(); ++k)
-        if(group_place(c[k]) == group_place(c[0])) passes.push_back(k);
+        if(place(c[k]) == place(c[0])) passes.push_back(k);
       if(passes.size() > 1) {
         // A hole touches the cycle at its smallest place: the walk between
         // two passes of it is a loop.  Start where a counter-clockwise one
@@ -594,7 +609,7 @@ private:
         std::size_t j = stack.size();   // the latest position of g's place in the stack
         auto range = at.equal_range(key_of(g));
         for(auto it = range.first; it != range.second; ++it)
-          if(it->second < stack.size() && group_place(stack[it->second]) == group_place(g) && (j == stack.size() || it->second > j))
+          if(it->second < stack.size() && place(stack[it->second]) == place(g) && (j == stack.size() || it->second > j))
             j = it->second;
         if(j < stack.size() && CGAL::is_negative(CGAL::Exact_rational(sum.back() + cross(stack.back(), g) - sum[j]))) {
           // a clockwise loop, stack[j] .. the top: a ring of its own
@@ -628,14 +643,43 @@ private:
       for(const auto& c : r) points.back().push_back(place(c.first, c.second));
     }
     bool t = false;
+    std::vector<std::pair<int, int> > on, edges;
     try {
-      t = validate_and_find_vertices_on_edges(points);
+      t = validate_and_find_vertices_on_edges(points, &on, &edges);
     } catch(const Input_error& e) {
       throw Input_error(std::string("the union is not a valid polygon: ") + e.what());
     }
-    // (the merges along the shared chains would have to split the edges
-    // there: see one_shot_needed())
     if(t) {
+      // A T that only the union has.  The merges along the shared chains
+      // would have to split the edge's cells there (see one_shot_needed()).
+      // The union polygon is noded there instead (the place added to the
+      // edge as a vertex, as GEOS's overlays do) and put in OGC's form: where
+      // a ring touched its own edge, it now passes the place twice, and a
+      // clockwise loop between the two passes becomes a hole.  Each ring
+      // still starts at its first vertex of before, or a split-off loop at its
+      // first in ring order.
+      std::map<std::pair<int, int>, std::vector<Point_2> > add;
+      for(std::size_t i = 0; i < on.size(); ++i) {
+        const Point_2& p = points[std::size_t(on[i].first)][std::size_t(on[i].second)];
+        std::vector<Point_2>& at = add[edges[i]];
+        if(std::find(at.begin(), at.end(), p) == at.end()) at.push_back(p);
+      }
+      std::vector<Point_2> flat;
+      std::vector<std::vector<int> > cycles;
+      for(const std::vector<Point_2>& r : with_nodes(points, add)) {
+        cycles.emplace_back();
+        for(const Point_2& p : r) {
+          cycles.back().push_back(int(flat.size()));
+          flat.push_back(p);
+        }
+      }
+      split_clockwise_loops(cycles, [&](int i) -> const Point_2& { return flat[std::size_t(i)]; });
+      points.clear();
+      for(std::vector<int>& c : cycles) {
+        std::rotate(c.begin(), std::min_element(c.begin(), c.end()), c.end());
+        points.emplace_back();
+        for(int i : c) points.back().push_back(flat[std::size_t(i)]);
+      }
       one_shot_needed_ = true;
       return;
     }
