@@ -1040,7 +1040,7 @@ void union_tests(Checker<Traits>& checker, const Options& o)
       }
     return r;
   };
-  std::size_t count = 0, with_t = 0, t_shared = 0;
+  std::size_t count = 0, with_t = 0, t_shared = 0, capped_unions = 0;
   const int seeds = o.quick ? 40 : 200;
   const int chain_lengths[] = {1, 2, 3, 5, 10, 30, 100};
   for(int seed = 0; seed < seeds; ++seed) {
@@ -1102,6 +1102,38 @@ void union_tests(Checker<Traits>& checker, const Options& o)
       };
       CHECK(rings_of(again) == rings_of(u) && sorted(again) == sorted(u),
             name << ": the way out numbers the union otherwise than its merges");
+    }
+    if(seed % 3 == 0 && s.whole.size() == 1 && stats.recomputed == 0) {
+      // the union merged once more: with a thin cap outside one edge of the
+      // outer ring (a union's axis is the axis of a whole polygon too)
+      const std::vector<Point>& W = s.whole[0];
+      const std::size_t i = std::size_t(rng.below(std::uint64_t(W.size()))), i1 = (i + 1) % W.size();
+      const Point &p = W[i], &q = W[i1];
+      const Point apex(0.5 * (p.x() + q.x()) + 0.05 * (q.y() - p.y()), 0.5 * (p.y() + q.y()) - 0.05 * (q.x() - p.x()));
+      Rings capped{W};
+      capped[0].insert(capped[0].begin() + std::ptrdiff_t(i + 1), apex);
+      bool valid = true;
+      try {
+        CGAL::Progressive_medial_axes::validate_polygon(capped);
+      } catch(const CGAL::Progressive_medial_axes::Input_error&) {
+        valid = false;   // (the cap crosses a neighbouring edge)
+      }
+      if(valid) {
+        const Rings cap{{q, p, apex}};
+        try {
+          CGAL::Progressive_medial_axes::Medial_axis_union_statistics again;
+          const MA c = axis(cap);
+          const MA v = seed % 2 ? CGAL::medial_axis_union_2(c, u, Traits(), &again) : CGAL::medial_axis_union_2(u, c, Traits(), &again);
+          CHECK(again.recomputed == 0 && again.shared_edges == 1 && v.number_of_input_rings() == 1,
+                name << ", with a cap: recomputed " << again.recomputed << ", " << again.shared_edges << " shared edges, "
+                     << v.number_of_input_rings() << " rings");
+          checker.compare(v, "union of a union", true, name + ", with a cap on edge " + std::to_string(i), rings_of(v));
+          ++capped_unions;
+        } catch(const std::exception& e) {
+          CHECK(false, name << ", with a cap on edge " << i << ": " << e.what() << "\n  a: " << wkt(s.a) << "\n  b: " << wkt(s.b)
+                            << "\n  cap: " << wkt(cap));
+        }
+      }
     }
     ++count;
     with_t += s.t_holes > 0;
@@ -1338,7 +1370,8 @@ void union_tests(Checker<Traits>& checker, const Options& o)
     const std::string what = error_of(p.medial_axis(), axis(Rings{{Point(2, 0), Point(0, 0), Point(1, -3)}}));
     CHECK(what.find("not the axis of a whole polygon") != std::string::npos, "union with a progressive step: '" << what << "'");
   }
-  std::cout << "union: " << count << " splits (" << with_t << " with T's, " << t_shared << " with one on the shared edge), " << filled << " holes filled exactly, " << diagonals
+  std::cout << "union: " << count << " splits (" << with_t << " with T's, " << t_shared << " with one on the shared edge; "
+            << capped_unions << " merged again with a cap), " << filled << " holes filled exactly, " << diagonals
             << " outlines split along a diagonal, " << grids << " grid skylines, " << ts << " unions with T's, " << union_ts
             << " with T's of their own\n";
 }

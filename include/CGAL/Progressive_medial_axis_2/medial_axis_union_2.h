@@ -28,8 +28,9 @@ namespace CGAL {
 
 The medial axis of the union of two polygons, from their medial axes (the
 paper's Fig. 24): `a` and `b` are the axes of two whole polygons (holes
-allowed; from `CGAL::medial_axis_2()` or the last step of a
-`Progressive_medial_axis_2`) with disjoint interiors whose boundaries share
+allowed; from `CGAL::medial_axis_2()`, the last step of a
+`Progressive_medial_axis_2`, or `CGAL::medial_axis_union_2()` itself, so
+that unions can be merged on) with disjoint interiors whose boundaries share
 one or more chains of edges: the same points, in opposite directions.  The
 union must be a valid polygon (its rings may touch at vertices).  Chains of
 any length are merged, and several chains make the union enclose holes.

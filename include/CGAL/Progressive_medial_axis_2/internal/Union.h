@@ -157,6 +157,7 @@ public:
   {
     in_[0] = &a;
     in_[1] = &b;
+    for(int x = 0; x < 2; ++x) count_corners(x);
   }
 
   std::shared_ptr<Data> run(Medial_axis_union_statistics& stats)
@@ -218,8 +219,17 @@ private:
   // axis added where one of its vertices lies inside one of its edges (a T:
   // the edge is split there, see triangulate_rings()).  The split place is a
   // vertex of the union's ring through that edge: the union polygon is
-  // noded there, as GEOS's overlays node theirs.
-  int corners(int x) const { return int(in_[x]->points.size()); }
+  // noded there, as GEOS's overlays node theirs.  Where x is itself a union
+  // that merges gave, its points end with the places inside its shared
+  // chains, which are no corners (they have no edge: see build_points()).
+  int corners(int x) const { return corners_[x]; }
+  void count_corners(int x)
+  {
+    const Data& d = *in_[x];
+    int n = int(d.points.size());
+    while(n > d.ring_start.back() && d.info[std::size_t(n) - 1].next < 0) --n;
+    corners_[x] = n;
+  }
   static const char* name(int x) { return x == 0 ? "the first polygon" : "the second polygon"; }
   std::string where(int x, int k) const
   {
@@ -408,6 +418,7 @@ private:
       noded_[y] = std::make_shared<Data>();
       set_points(*noded_[y], with_nodes(rings, add[y]), traits_.orientation_2_object());
       in_[y] = noded_[y].get();
+      count_corners(y);
       prev_[y].clear();
       one_shot_needed_ = true;
     }
@@ -771,6 +782,7 @@ private:
 
   const Traits& traits_;
   const Data* in_[2];
+  int corners_[2];
   std::shared_ptr<Data> noded_[2];   // copies noded at T's on shared edges (see node_split_shared_edges())
   std::vector<int> boundary_[2], shared_[2], group_[2], map_[2];
   mutable std::vector<int> prev_[2];
