@@ -234,7 +234,12 @@ private:
   std::string where(int x, int k) const
   {
     const Point_info& i = in_[x]->info[std::size_t(k)];
-    return std::string(name(x)) + " ring " + std::to_string(i.ring) + " vertex " + std::to_string(i.index);
+    const std::string ring = std::string(name(x)) + " ring " + std::to_string(i.ring);
+    if(origin_[x].empty() || i.ring < 0)
+      return ring + " vertex " + std::to_string(i.index);
+    // a noded copy: named as the polygon was given
+    const int o = origin_[x][std::size_t(i.ring)][std::size_t(i.index)];
+    return o >= 0 ? ring + " vertex " + std::to_string(o) : ring + " edge " + std::to_string(-1 - o) + ", at a T inside it";
   }
   std::array<double, 4> key(const Point_2& p, const Point_2& q) const
   {
@@ -357,7 +362,7 @@ private:
   // with a copy of the other polygon noded there (the place added to the
   // edge as a vertex), and at its own T's too (as a polygon's own T's are in
   // a merged union; a copy has no split edges, see set_points()); in_[y]
-  // then points to that copy, and messages name its vertices.  Its axis is
+  // then points to that copy, and messages name the vertices as given.  Its axis is
   // computed in one shot: the merges would have to split that edge's cell.
   void node_split_shared_edges()
   {
@@ -416,7 +421,7 @@ private:
       for(std::size_t r = 0; r + 1 < d.ring_start.size(); ++r)
         rings.emplace_back(d.points.begin() + d.ring_start[r], d.points.begin() + d.ring_start[r + 1]);
       noded_[y] = std::make_shared<Data>();
-      set_points(*noded_[y], with_nodes(rings, add[y]), traits_.orientation_2_object());
+      set_points(*noded_[y], with_nodes(rings, add[y], &origin_[y]), traits_.orientation_2_object());
       in_[y] = noded_[y].get();
       count_corners(y);
       prev_[y].clear();
@@ -426,16 +431,21 @@ private:
 
   // `rings` with places added inside their edges: `add` maps an edge (the
   // ring and index of its first vertex) to places inside it, in any order.
+  // With `origin`, what each vertex of the result was: its index in `rings`,
+  // or -1 - e for a place added inside edge e.
   static std::vector<std::vector<Point_2> > with_nodes(const std::vector<std::vector<Point_2> >& rings,
-                                                       const std::map<std::pair<int, int>, std::vector<Point_2> >& add)
+                                                       const std::map<std::pair<int, int>, std::vector<Point_2> >& add,
+                                                       std::vector<std::vector<int> >* origin = nullptr)
   {
     std::vector<std::vector<Point_2> > noded;
+    if(origin) origin->assign(rings.size(), std::vector<int>());
     for(std::size_t r = 0; r < rings.size(); ++r) {
       const std::size_t m = rings[r].size();
       noded.emplace_back();
       for(std::size_t i = 0; i < m; ++i) {
         const Point_2& b = rings[r][(i + 1) % m];
         noded.back().push_back(rings[r][i]);
+        if(origin) (*origin)[r].push_back(int(i));
         auto it = add.find(std::make_pair(int(r), int(i)));
         if(it == add.end()) continue;
         std::vector<Point_2> at = it->second;   // in order along the edge, towards b
@@ -443,6 +453,7 @@ private:
           return Kernel().collinear_are_strictly_ordered_along_line_2_object()(u, v, b);
         });
         noded.back().insert(noded.back().end(), at.begin(), at.end());
+        if(origin) (*origin)[r].insert((*origin)[r].end(), at.size(), -1 - int(i));
       }
     }
     return noded;
@@ -784,6 +795,7 @@ private:
   const Data* in_[2];
   int corners_[2];
   std::shared_ptr<Data> noded_[2];   // copies noded at T's on shared edges (see node_split_shared_edges())
+  std::vector<std::vector<int> > origin_[2];   // of a noded copy's vertices, by ring (see with_nodes())
   std::vector<int> boundary_[2], shared_[2], group_[2], map_[2];
   mutable std::vector<int> prev_[2];
   std::vector<Group> groups_;
