@@ -194,6 +194,24 @@ void union_of_two(const std::string& data)
     pairs_against_oracle(d + p + "_a.wkt", {-1}, "--union " + d + p + "_b.wkt");
     pairs_against_oracle(d + p + "_b.wkt", {-1}, "--union " + d + p + "_a.wkt");
   }
+  // --union given twice: the union of a and b, merged again with c (along
+  // two edges of the first union, whose vertex between them is then inside)
+  for(const std::string& three : {"--union " + d + "three_b.wkt --union " + d + "three_c.wkt " + d + "three_a.wkt",
+                                  "--union " + d + "three_a.wkt --union " + d + "three_b.wkt " + d + "three_c.wkt",
+                                  "--union " + d + "three_c.wkt --union " + d + "three_b.wkt " + d + "three_a.wkt"}) {
+    const std::size_t at = three.rfind(' ');
+    pairs_against_oracle(three.substr(at + 1), {-1}, three.substr(0, at));
+  }
+  {
+    Result t = run(tool + " --stats --union " + d + "three_b.wkt --union " + d + "three_c.wkt " + d + "three_a.wkt");
+    CHECK(t.status == 0 && t.out.find("\nunions 2\n") != std::string::npos && t.out.find("\nunion_shared_edges 3\n") != std::string::npos &&
+            t.out.find("\nunion_chains 2\n") != std::string::npos && t.out.find("\nunion_recomputed 0\n") != std::string::npos,
+          "--union twice --stats: " << t.out << t.err);
+    t = run(tool + " --union " + d + "three_b.wkt --union " + d + "star_a.wkt " + d + "three_a.wkt");
+    CHECK(t.status == 2 && count_lines(t.err) == 1 &&
+            t.err.find("three_a.wkt, " + d + "three_b.wkt and " + d + "star_a.wkt: the polygons share no edge") != std::string::npos,
+          "--union twice, the second sharing no edge: exit status " << t.status << ", '" << t.err << "'");
+  }
   Result r = run(tool + " --stats --union " + d + "ring_b.wkt " + d + "ring_a.wkt");
   CHECK(r.status == 0 && r.out.find("\nunion_shared_edges 2\n") != std::string::npos &&
           r.out.find("\nunion_chains 2\n") != std::string::npos && r.out.find("\ntime_union_merge ") != std::string::npos &&

@@ -96,7 +96,9 @@ const char* usage_text =
   "  --union OTHER      OTHER is a second polygon whose boundary shares chains of edges\n"
   "                     with INPUT's (same points, opposite directions): compute both\n"
   "                     axes in one shot, merge them, and output the axis of the union;\n"
-  "                     ids then refer to the union polygon, as --shape-out writes it\n"
+  "                     ids then refer to the union polygon, as --shape-out writes it;\n"
+  "                     given again, each OTHER is merged in turn with the union of\n"
+  "                     those before it\n"
   "  --prune SPEC       prune every axis output by erosion thickness (extended\n"
   "                     grassfire): SPEC is et=T, ratio=Q or et=T,ratio=Q; keeps the\n"
   "                     points with ET >= T (input units) and ET >= Q * EDF\n"
@@ -122,7 +124,8 @@ const char* usage_text =
 struct Options {
   bool pairs = false, branches = false, stats = false;
   long long step = -1;
-  std::string input, union_with, shape_out, svg, geojson, wkt_out, frames_prefix, html, traits = "filtered";
+  std::string input, shape_out, svg, geojson, wkt_out, frames_prefix, html, traits = "filtered";
+  std::vector<std::string> union_with;   // --union, in the order given
   int frames = 0;
   int threads = 0;   // 0: all hardware threads
   bool prune = false, extend = false, inscribed_circle = false, repair = false;
@@ -198,7 +201,7 @@ Options parse(int argc, char** argv)
       if(v.empty() || *end != '\0' || o.step < 0) usage_error("--step needs a non-negative integer, got '" + v + "'");
     }
     else if(a == "--shape-out") o.shape_out = value("--shape-out");
-    else if(a == "--union") o.union_with = value("--union");
+    else if(a == "--union") o.union_with.push_back(value("--union"));
     else if(a == "--svg") o.svg = value("--svg");
     else if(a == "--geojson") o.geojson = value("--geojson");
     else if(a == "--wkt-out") o.wkt_out = value("--wkt-out");
@@ -337,9 +340,11 @@ void use_huge_pages(const Options& o, char** argv)
   if(before.find("glibc.malloc.hugetlb") != std::string::npos || getauxval(AT_BASE) == 0) return;
   // (the input and, with --union, the other polygon's file)
   std::uintmax_t size = 0;
-  for(const std::string* file : {&o.input, &o.union_with}) {
+  std::vector<std::string> files = o.union_with;
+  files.push_back(o.input);
+  for(const std::string& file : files) {
     std::error_code error;
-    if(!file->empty()) size += std::filesystem::file_size(*file, error);
+    size += std::filesystem::file_size(file, error);
     if(error) return;
   }
   if(size < min_huge_pages_input_bytes || !huge_page_heap_possible()) return;
@@ -597,7 +602,7 @@ int run(const Options& o)
     return 2;
   }
   warn_skipped(o.input, skipped);
-  // --union: the second polygon, read and checked here (INPUT's is checked
+  // --union: the other polygons, read and checked here (INPUT's is checked
   // below, with every input polygon)
   std::vector<pma_tool::Input_polygon<CGAL::Epick::Point_2> > other;
   if(!o.union_with.empty()) {
@@ -608,12 +613,16 @@ int run(const Options& o)
     };
     try {
       one_polygon(input.size());
-      file = &o.union_with;
-      pma_tool::Skipped_geometries other_skipped;
-      other = pma_tool::read_polygons_file<CGAL::Epick::Point_2>(o.union_with, &other_skipped);
-      warn_skipped(o.union_with, other_skipped);
-      one_polygon(other.size());
-      CGAL::Progressive_medial_axes::validate_polygon(other[0].rings);
+      for(const std::string& name : o.union_with) {
+        file = &name;
+        pma_tool::Skipped_geometries other_skipped;
+        std::vector<pma_tool::Input_polygon<CGAL::Epick::Point_2> > read =
+          pma_tool::read_polygons_file<CGAL::Epick::Point_2>(name, &other_skipped);
+        warn_skipped(name, other_skipped);
+        one_polygon(read.size());
+        CGAL::Progressive_medial_axes::validate_polygon(read[0].rings);
+        other.push_back(std::move(read[0]));
+      }
     } catch(const CGAL::Progressive_medial_axes::Input_error& e) {
       std::cerr << *file << ": " << e.what() << "\n";
       return 2;
@@ -834,29 +843,43 @@ int run(const Options& o)
     usage_error("--step, --frames, --html, --progressive and --shape-out need one polygon; " + o.input + " has " +
                 std::to_string(input.size()));
   std::unique_ptr<PMA> pma;
+  // (with --union given more than once: summed over the unions, and
+  // `recomputed` 1 if any union was computed in one shot)
   CGAL::Progressive_medial_axes::Medial_axis_union_statistics union_stats;
   if(!o.union_with.empty()) {
-    // the two axes in one shot, then their union
+    // the axes in one shot, then their union, with each other polygon in turn
     Job& job = jobs[0];
-    Medial_axis a, b;
-    CGAL::Progressive_medial_axis_statistics sb;
+    std::vector<Medial_axis> axes(other.size() + 1);
+    std::vector<CGAL::Progressive_medial_axis_statistics> so(other.size());
     in_arena([&]() {
-      a = CGAL::medial_axis_2(input[0].rings, Traits(), CGAL::TRUST_INPUT, &job.stats);
-      b = CGAL::medial_axis_2(other[0].rings, Traits(), CGAL::TRUST_INPUT, &sb);
+      axes[0] = CGAL::medial_axis_2(input[0].rings, Traits(), CGAL::TRUST_INPUT, &job.stats);
+      for(std::size_t k = 0; k < other.size(); ++k)
+        axes[k + 1] = CGAL::medial_axis_2(other[k].rings, Traits(), CGAL::TRUST_INPUT, &so[k]);
     });
-    try {
-      job.one_shot = CGAL::medial_axis_union_2(a, b, Traits(), &union_stats);
-    } catch(const CGAL::Progressive_medial_axes::Input_error& e) {
-      std::cerr << o.input << " and " << o.union_with << ": " << e.what() << "\n";
-      return 2;
+    for(std::size_t k = 0; k < other.size(); ++k) {
+      CGAL::Progressive_medial_axes::Medial_axis_union_statistics u;
+      try {
+        job.one_shot = CGAL::medial_axis_union_2(k == 0 ? axes[0] : job.one_shot, axes[k + 1], Traits(), &u);
+      } catch(const CGAL::Progressive_medial_axes::Input_error& e) {
+        // ("A and B: ...", then "A, B and C: ..." for the union of A and B with C)
+        std::cerr << o.input;
+        for(std::size_t i = 0; i < k; ++i) std::cerr << ", " << o.union_with[i];
+        std::cerr << " and " << o.union_with[k] << ": " << e.what() << "\n";
+        return 2;
+      }
+      add_statistics(job.stats, so[k]);
+      job.stats.switches += u.switches;
+      job.stats.vanishings += u.vanishings;
+      // (where the merges met anomalies, the union's axis was computed again
+      // in one shot: they do not touch it)
+      if(!u.recomputed) job.stats.anomalies += u.anomalies;
+      job.stats.undecided_ties += u.undecided_ties;
+      union_stats.shared_edges += u.shared_edges;
+      union_stats.chains += u.chains;
+      union_stats.recomputed = (std::max)(union_stats.recomputed, u.recomputed);
+      union_stats.merge_seconds += u.merge_seconds;
+      union_stats.join_seconds += u.join_seconds;
     }
-    add_statistics(job.stats, sb);
-    job.stats.switches += union_stats.switches;
-    job.stats.vanishings += union_stats.vanishings;
-    // (where the merges met anomalies, the union's axis was computed again
-    // in one shot: they do not touch it)
-    if(!union_stats.recomputed) job.stats.anomalies += union_stats.anomalies;
-    job.stats.undecided_ties += union_stats.undecided_ties;
     job.stats.validation_seconds = 0;   // (counted in time_read with the reading)
     job.ma = &job.one_shot;
   } else if(repair_in_tasks) {
@@ -1138,9 +1161,9 @@ int run(const Options& o)
     }
     if(!o.union_with.empty())
       std::printf("time_union_merge %.6f\ntime_union_join %.6f\nunion_shared_edges %zu\nunion_chains %zu\n"
-                  "union_recomputed %zu\n",
+                  "union_recomputed %zu\nunions %zu\n",
                   union_stats.merge_seconds, union_stats.join_seconds, union_stats.shared_edges, union_stats.chains,
-                  union_stats.recomputed);
+                  union_stats.recomputed, o.union_with.size());
     std::printf("medial_curves %zu\nbranch_vertices %zu\n", curves, nb);
     print_filter_statistics(Traits(), 0);
     if(o.prune) std::printf("pruned_curves %zu\n", pruned_curves);
