@@ -1140,8 +1140,9 @@ void union_tests(Checker<Traits>& checker, const Options& o)
     t_shared += s.t_on_shared_edge;
     if(pma_test::failures() > 20) return;
   }
-  CHECK(with_t >= std::size_t(seeds) / 10 && t_shared >= std::size_t(seeds) / 40,
-        "only " << with_t << " splits with holes touching an edge at a T, " << t_shared << " on the shared edge");
+  CHECK(with_t >= std::size_t(seeds) / 10 && t_shared >= std::size_t(seeds) / 40 && capped_unions >= std::size_t(seeds) / 10,
+        "only " << with_t << " splits with holes touching an edge at a T, " << t_shared << " on the shared edge, "
+                << capped_unions << " unions merged again");
   // a hole filled exactly (a ring shared as a whole): not merged, computed
   // in one shot of the union polygon; the filler has a hole of its own in
   // every other seed, and the order of the two axes alternates

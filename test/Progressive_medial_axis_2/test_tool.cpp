@@ -201,10 +201,16 @@ void union_of_two(const std::string& data)
                                   "--union " + d + "three_c.wkt --union " + d + "three_b.wkt " + d + "three_a.wkt"}) {
     const std::size_t at = three.rfind(' ');
     pairs_against_oracle(three.substr(at + 1), {-1}, three.substr(0, at));
+    // (the union of all three: a vertex of each, and no place inside a chain)
+    Result t = run(tool + " " + three.substr(0, at) + " --shape-out " + tmp + "/three.wkt " + three.substr(at + 1));
+    const std::string u = slurp(tmp + "/three.wkt");
+    CHECK(t.status == 0 && u.find("0 0") != std::string::npos && u.find("4.5 0") != std::string::npos &&
+            u.find("3 4.5") != std::string::npos && u.find("2 1") == std::string::npos && u.find("2 2") == std::string::npos,
+          three << ": the union written is " << u << t.err);
   }
   {
     Result t = run(tool + " --stats --union " + d + "three_b.wkt --union " + d + "three_c.wkt " + d + "three_a.wkt");
-    CHECK(t.status == 0 && t.out.find("\nunions 2\n") != std::string::npos && t.out.find("\nunion_shared_edges 3\n") != std::string::npos &&
+    CHECK(t.status == 0 && t.out.find("\nunions 2\n") != std::string::npos && t.out.find("\nunion_shared_edges 4\n") != std::string::npos &&
             t.out.find("\nunion_chains 2\n") != std::string::npos && t.out.find("\nunion_recomputed 0\n") != std::string::npos,
           "--union twice --stats: " << t.out << t.err);
     t = run(tool + " --union " + d + "three_b.wkt --union " + d + "star_a.wkt " + d + "three_a.wkt");

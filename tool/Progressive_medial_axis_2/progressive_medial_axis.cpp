@@ -864,7 +864,8 @@ int run(const Options& o)
         // ("A and B: ...", then "A, B and C: ..." for the union of A and B with C)
         std::cerr << o.input;
         for(std::size_t i = 0; i < k; ++i) std::cerr << ", " << o.union_with[i];
-        std::cerr << " and " << o.union_with[k] << ": " << e.what() << "\n";
+        std::cerr << " and " << o.union_with[k] << ": " << e.what()
+                  << (k == 0 ? "" : " (the first polygon: the union so far, numbered as --shape-out would write it)") << "\n";
         return 2;
       }
       add_statistics(job.stats, so[k]);

@@ -30,7 +30,8 @@ The medial axis of the union of two polygons, from their medial axes (the
 paper's Fig. 24): `a` and `b` are the axes of two whole polygons (holes
 allowed; from `CGAL::medial_axis_2()`, the last step of a
 `Progressive_medial_axis_2`, or `CGAL::medial_axis_union_2()` itself, so
-that unions can be merged on) with disjoint interiors whose boundaries share
+that unions can be merged on, each along the union's polygon as it numbers
+it) with disjoint interiors whose boundaries share
 one or more chains of edges: the same points, in opposite directions.  The
 union must be a valid polygon (its rings may touch at vertices).  Chains of
 any length are merged, and several chains make the union enclose holes.
@@ -68,9 +69,10 @@ Where a polygon has a T of its own, the union's ring through the edge gets
 the place as a vertex (the union is noded there, as GEOS's overlays are),
 and the merges go on as usual.  A T that only the union has is noded too:
 where the union's ring touched its own edge there, the clockwise loop
-between its two passes of the place becomes a hole (OGC's form).  Such a
-ring then starts at its first vertex of before, or, for a loop split off,
-at its first vertex in the order of that ring.
+between its two passes of the place becomes a hole (OGC's form), numbered
+as above (the added vertex ranks as the T's vertex).  A third polygon
+merged with such a union shares an edge split there only if it has the
+vertex there too.
 
 Throws `Progressive_medial_axes::Input_error`, with one line naming the
 problem, when an axis is not the axis of a whole polygon, when the polygons

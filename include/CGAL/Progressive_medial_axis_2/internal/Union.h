@@ -677,28 +677,43 @@ private:
       // The union polygon is noded there instead (the place added to the
       // edge as a vertex, as GEOS's overlays do) and put in OGC's form: where
       // a ring touched its own edge, it now passes the place twice, and a
-      // clockwise loop between the two passes becomes a hole.  Each ring
-      // still starts at its first vertex of before, or a split-off loop at its
-      // first in ring order.
+      // clockwise loop between the two passes becomes a hole.  The rings are
+      // then numbered as union_rings() numbers them: each from its vertex
+      // that comes first in input order (an added place is the T's vertex),
+      // the holes in the order of those vertices.
       std::map<std::pair<int, int>, std::vector<Point_2> > add;
+      std::vector<std::pair<Point_2, std::pair<int, int> > > rank_at;   // a T's place, its first corner in input order
       for(std::size_t i = 0; i < on.size(); ++i) {
         const Point_2& p = points[std::size_t(on[i].first)][std::size_t(on[i].second)];
+        const std::pair<int, int>& r = rings[std::size_t(on[i].first)][std::size_t(on[i].second)];
         std::vector<Point_2>& at = add[edges[i]];
         if(std::find(at.begin(), at.end(), p) == at.end()) at.push_back(p);
+        auto it = std::find_if(rank_at.begin(), rank_at.end(), [&](const auto& x) { return x.first == p; });
+        if(it == rank_at.end()) rank_at.emplace_back(p, r);
+        else it->second = (std::min)(it->second, r);
       }
+      std::vector<std::vector<int> > origin;
+      const std::vector<std::vector<Point_2> > noded = with_nodes(points, add, &origin);
       std::vector<Point_2> flat;
+      std::vector<std::pair<int, int> > rank;   // of each point of flat
       std::vector<std::vector<int> > cycles;
-      for(const std::vector<Point_2>& r : with_nodes(points, add)) {
+      for(std::size_t r = 0; r < noded.size(); ++r) {
         cycles.emplace_back();
-        for(const Point_2& p : r) {
+        for(std::size_t j = 0; j < noded[r].size(); ++j) {
+          const Point_2& p = noded[r][j];
+          const int o = origin[r][j];
           cycles.back().push_back(int(flat.size()));
           flat.push_back(p);
+          rank.push_back(o >= 0 ? rings[r][std::size_t(o)]
+                                : std::find_if(rank_at.begin(), rank_at.end(), [&](const auto& x) { return x.first == p; })->second);
         }
       }
       split_clockwise_loops(cycles, [&](int i) -> const Point_2& { return flat[std::size_t(i)]; });
+      auto by_rank = [&](int u, int v) { return rank[std::size_t(u)] < rank[std::size_t(v)]; };
+      for(std::vector<int>& c : cycles) std::rotate(c.begin(), std::min_element(c.begin(), c.end(), by_rank), c.end());
+      std::sort(cycles.begin() + 1, cycles.end(), [&](const std::vector<int>& u, const std::vector<int>& v) { return by_rank(u[0], v[0]); });
       points.clear();
-      for(std::vector<int>& c : cycles) {
-        std::rotate(c.begin(), std::min_element(c.begin(), c.end()), c.end());
+      for(const std::vector<int>& c : cycles) {
         points.emplace_back();
         for(int i : c) points.back().push_back(flat[std::size_t(i)]);
       }
