@@ -369,8 +369,7 @@ private:
     // for each polygon y, the places to add inside its edges: (ring, written index of the edge) -> places
     std::map<std::pair<int, int>, std::vector<Point_2> > add[2];
     auto node = [&](int y, int edge_ring, int edge_index, const Point_2& t) {
-      std::vector<Point_2>& at = add[y][std::make_pair(edge_ring, edge_index)];
-      if(std::find(at.begin(), at.end(), t) == at.end()) at.push_back(t);
+      add_once(add[y][std::make_pair(edge_ring, edge_index)], t);
     };
     // each polygon's split input edges: (ring, written index) -> its ends (in
     // the direction of the interior) and the places of its T's
@@ -382,7 +381,7 @@ private:
     for(int x = 0; x < 2; ++x)
       for_each_split_half(x, [&](int edge_ring, int edge_index, int from, int to, int c) {
         Split_edge& e = split[x].emplace(std::make_pair(edge_ring, edge_index), Split_edge{from, to, {}}).first->second;
-        if(std::find(e.at.begin(), e.at.end(), place(x, c)) == e.at.end()) e.at.push_back(place(x, c));
+        add_once(e.at, place(x, c));
       });
     // the other polygon's input edge with the same ends, reversed, is noded at
     // the T's it does not have (whether it is split elsewhere or not)
@@ -427,6 +426,12 @@ private:
       prev_[y].clear();
       one_shot_needed_ = true;
     }
+  }
+
+  // Adds place p to the places `at` unless it is there already.
+  static void add_once(std::vector<Point_2>& at, const Point_2& p)
+  {
+    if(std::find(at.begin(), at.end(), p) == at.end()) at.push_back(p);
   }
 
   // `rings` with places added inside their edges: `add` maps an edge (the
@@ -557,9 +562,7 @@ private:
     // each ring from its first corner in input order (the first polygon's,
     // then the second's), the holes in the order of those corners
     auto rank = [&](int g) { return std::make_pair(groups_[std::size_t(g)].first_x, groups_[std::size_t(g)].first); };
-    for(std::vector<int>& c : cycles)
-      std::rotate(c.begin(), std::min_element(c.begin(), c.end(), [&](int u, int v) { return rank(u) < rank(v); }), c.end());
-    std::sort(cycles.begin() + 1, cycles.end(), [&](const std::vector<int>& u, const std::vector<int>& v) { return rank(u[0]) < rank(v[0]); });
+    in_input_order(cycles, rank);
     std::vector<std::vector<std::pair<int, int> > > rings;
     for(const std::vector<int>& c : cycles) {
       rings.emplace_back();
@@ -567,6 +570,17 @@ private:
     }
     return rings;
   }
+  // Each cycle rotated to start at its element of smallest rank (its first
+  // corner in input order), and the cycles after the first (the holes)
+  // sorted by the ranks of their first elements.
+  template <class Rank>
+  static void in_input_order(std::vector<std::vector<int> >& cycles, const Rank& rank)
+  {
+    for(std::vector<int>& c : cycles)
+      std::rotate(c.begin(), std::min_element(c.begin(), c.end(), [&](int u, int v) { return rank(u) < rank(v); }), c.end());
+    std::sort(cycles.begin() + 1, cycles.end(), [&](const std::vector<int>& u, const std::vector<int>& v) { return rank(u[0]) < rank(v[0]); });
+  }
+
   // OGC's form of the union's rings.  Where a cycle passes one place twice
   // and the loop between the two passes runs clockwise (a hole that touches
   // the outer ring at a point, or two holes that touch), that loop becomes a
@@ -686,8 +700,7 @@ private:
       for(std::size_t i = 0; i < on.size(); ++i) {
         const Point_2& p = points[std::size_t(on[i].first)][std::size_t(on[i].second)];
         const std::pair<int, int>& r = rings[std::size_t(on[i].first)][std::size_t(on[i].second)];
-        std::vector<Point_2>& at = add[edges[i]];
-        if(std::find(at.begin(), at.end(), p) == at.end()) at.push_back(p);
+        add_once(add[edges[i]], p);
         auto it = std::find_if(rank_at.begin(), rank_at.end(), [&](const auto& x) { return x.first == p; });
         if(it == rank_at.end()) rank_at.emplace_back(p, r);
         else it->second = (std::min)(it->second, r);
@@ -709,9 +722,7 @@ private:
         }
       }
       split_clockwise_loops(cycles, [&](int i) -> const Point_2& { return flat[std::size_t(i)]; });
-      auto by_rank = [&](int u, int v) { return rank[std::size_t(u)] < rank[std::size_t(v)]; };
-      for(std::vector<int>& c : cycles) std::rotate(c.begin(), std::min_element(c.begin(), c.end(), by_rank), c.end());
-      std::sort(cycles.begin() + 1, cycles.end(), [&](const std::vector<int>& u, const std::vector<int>& v) { return by_rank(u[0], v[0]); });
+      in_input_order(cycles, [&](int i) { return rank[std::size_t(i)]; });
       points.clear();
       for(const std::vector<int>& c : cycles) {
         points.emplace_back();
