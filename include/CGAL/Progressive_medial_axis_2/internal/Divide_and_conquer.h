@@ -876,9 +876,9 @@ private:
 };
 
 /// The number of parts of a one-shot of `triangles` triangles: parts of
-/// about 4,096 triangles, at least four and at most sixteen per thread of
-/// the current task arena (on one thread too), and of at least 32
-/// triangles.  Balanced parts merged pairwise do less work than one part
+/// about 4,096 triangles, at least four per thread of the current task
+/// arena (on one thread too), and of at least 32 triangles.  Balanced
+/// parts merged pairwise do less work than one part
 /// grown a triangle at a time where many generators are cocircular: on one
 /// thread, a regular 1000-gon took 279 ms in one part and 89 ms in four, a
 /// Koch snowflake of 384 vertices 19.7 ms and 13.4 ms, country outlines
@@ -888,11 +888,21 @@ private:
 /// part's time (country outlines of 80,000 to 128,000 vertices on two
 /// threads took 5% to 8% less time in 32 parts than in 8; RESULTS.md,
 /// "More parts", fourteenth session).  Each part costs a little in the join,
-/// which is why the parts of smaller polygons stay larger.
+/// which is why the parts of smaller polygons stay larger.  Large polygons
+/// are no longer held to sixteen parts a thread: on several threads each
+/// part is built in a structure of its own, kept beside the result's until
+/// the parts before it are moved, and the emptied structures are kept for
+/// the next parts, so a few parts' worth of memory sits beside the axis.
+/// In parts of 4,096 triangles, on two threads, a plate of 170,000 holes
+/// peaked 44 MiB lower (508 -> 464 MiB) and the three largest land-10m
+/// polygons tried 4 to 56 MiB lower (up to 11%); on one thread a plate of
+/// 100,000 holes peaked 10 MiB lower (not explained); the times stayed
+/// within this VM's noise (RESULTS.md, "Smaller parts for large polygons",
+/// fifty-third session).
 inline std::size_t default_parts(std::size_t triangles)
 {
   const std::size_t threads = arena_threads();
-  const std::size_t by_size = (std::min)((std::max)(triangles / 4096, 4 * threads), 16 * threads);
+  const std::size_t by_size = (std::max)(triangles / 4096, 4 * threads);
   return (std::max)(std::size_t(1), (std::min)(by_size, triangles / 32));
 }
 
