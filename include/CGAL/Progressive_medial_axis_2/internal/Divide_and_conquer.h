@@ -894,9 +894,9 @@ private:
 /// the parts before it are moved, and the emptied structures are kept for
 /// the next parts, so a few parts' worth of memory sits beside the axis.
 /// In parts of 4,096 triangles, on two threads, a plate of 170,000 holes
-/// peaked 44 MiB lower (508 -> 464 MiB) and the three largest land-10m
-/// polygons tried 4 to 56 MiB lower (up to 11%); on one thread a plate of
-/// 100,000 holes peaked 10 MiB lower (not explained); the times stayed
+/// peaked 44 to 51 MiB lower (508 and 515 -> 464 MiB) and three of the
+/// largest land-10m polygons 4 to 56 MiB lower (3% to 12%); on one thread a
+/// plate of 100,000 holes peaked 10 MiB lower (not explained); the times stayed
 /// within this VM's noise (RESULTS.md, "Smaller parts for large polygons",
 /// fifty-third session).
 inline std::size_t default_parts(std::size_t triangles)
