@@ -120,6 +120,14 @@ void kernels()
                 "the double model is asked for explicitly");
   typedef CGAL::Progressive_medial_axis_traits_2<CGAL::Simple_cartesian<double> > Double_traits;
   CHECK(pairs(CGAL::medial_axis_2(plate<Epick>(), Double_traits())) == holes_ref, "double model");
+  // rings given up (a moved-from vector): the same axis, and the rings emptied
+  const CGAL::Polygon_with_holes_2<Epick> given_plate = plate<Epick>();
+  std::vector<std::vector<Epick::Point_2> > given;
+  given.emplace_back(given_plate.outer_boundary().begin(), given_plate.outer_boundary().end());
+  for(const auto& hole : given_plate.holes()) given.emplace_back(hole.begin(), hole.end());
+  CHECK(pairs(CGAL::medial_axis_2(std::move(given), CGAL::Progressive_medial_axis_traits_2<Epick>())) == holes_ref,
+        "one-shot of rings given up");
+  CHECK(given.empty(), "the rings given up to the one-shot are emptied");
   typedef CGAL::Progressive_medial_axis_traits_2<CGAL::Simple_cartesian<CORE::Expr> > Core_traits;
   CHECK(pairs(CGAL::medial_axis_2(l_shape<Epick>(), Core_traits())) == simple_ref, "CORE::Expr model");
   // the CORE::Expr model writes no Core_Diagnostics file into the working

@@ -634,6 +634,16 @@ void fine_tests(Checker<Traits>& checker, const Options&)
           what << ": the one-shot took the divide and conquer (" << stats.merges << " merges, "
                << stats.switches + stats.vanishings << " events)");
     checker.compare(ma, "one-shot", true, what, rings);
+    if constexpr(std::is_same<Rings, std::vector<std::vector<typename Kernel::Point_2> > >::value) {
+      // the rings given up to the one-shot: boundary evolution starts again
+      // from the rings it rebuilds from its copy of the points
+      Rings given = rings;
+      CGAL::Progressive_medial_axis_statistics gs;
+      const auto mg = in_arena(2, [&] { return CGAL::medial_axis_2(std::move(given), Traits(), CGAL::CHECK_INPUT, &gs); });
+      CHECK(given.empty() && gs.boundary_evolution_one_shots == stats.boundary_evolution_one_shots,
+            what << ": the one-shot of the rings given up");
+      checker.compare(mg, "one-shot of the rings given up", true, what, rings);
+    }
 
     const auto r = I::rings_of<Kernel>(rings);
     typename I::Medial_axis_engine<Traits>::Data starved, fed;

@@ -629,6 +629,16 @@ int run(const Options& o)
     }
   }
   double read_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t_read).count();
+#ifdef __GLIBC__
+  // One polygon: one heap for all the threads.  What the other threads free
+  // in heaps of their own stays with the process (glibc's malloc_trim()
+  // gives back the top of the main heap only): 13 MiB of the peak of a
+  // plate of 100,000 holes on two threads, 8 MiB of c1m_USA_3's.  With
+  // thousands of polygons at once, one heap raised the peak of a
+  // whole-world file by 6% (RESULTS.md, fifty-fourth session).
+  if(input.size() == 1)
+    mallopt(M_ARENA_MAX, 1);
+#endif
 
   // A plain one-shot of one polygon from a small file, on the default
   // number of threads, runs on this thread outside the arena: the library
@@ -733,12 +743,12 @@ int run(const Options& o)
   const std::thread::id caller = std::this_thread::get_id();
   // the one-shot axis of `rings` and its statistics (the filter counters of
   // every thread counted); the input error, if any
-  auto one_shot = [&](const auto& rings, CGAL::Medial_axis_input_check checking, Medial_axis& axis,
+  auto one_shot = [&](auto&& rings, CGAL::Medial_axis_input_check checking, Medial_axis& axis,
                       CGAL::Progressive_medial_axis_statistics& stats) {
     std::string error;
     counters.run_counted(caller, counters_mutex, [&]() {
       try {
-        axis = CGAL::medial_axis_2(rings, Traits(), checking, &stats);
+        axis = CGAL::medial_axis_2(std::forward<decltype(rings)>(rings), Traits(), checking, &stats);
       } catch(const CGAL::Progressive_medial_axes::Input_error& e) {
         error = e.what();
       }
@@ -898,7 +908,12 @@ int run(const Options& o)
     in_arena([&]() {
       for_each_polygon(jobs_largest_first, [&](std::size_t k) {
         Job& job = jobs[k];
-        errors[k] = one_shot(job.input->rings, check_in_one_shot ? CGAL::CHECK_INPUT : CGAL::TRUST_INPUT, job.one_shot, job.stats);
+        const auto checking = check_in_one_shot ? CGAL::CHECK_INPUT : CGAL::TRUST_INPUT;
+        // The rings are given up to the one-shot, which gives their memory
+        // back once it has copied the points, unless --stats counts the
+        // steps of region growing from them afterwards.
+        errors[k] = o.stats ? one_shot(input[k].rings, checking, job.one_shot, job.stats)
+                            : one_shot(std::move(input[k].rings), checking, job.one_shot, job.stats);
         if(errors[k].empty()) {
           if(!check_in_one_shot) job.stats.validation_seconds = job.validation_seconds;
           job.ma = &job.one_shot;

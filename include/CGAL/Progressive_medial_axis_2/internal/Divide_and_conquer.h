@@ -489,7 +489,7 @@ public:
               pool.pop_back();
             }
           }
-          hds.reserve_for_points(largest);
+          hds.reserve_for_triangles(largest);
         }
         Part_progress progress;
         if(p < probed_.size() && probed_[p])

@@ -346,6 +346,18 @@ void set_points(Data& data, const std::vector<std::vector<Point_2> >& rings, con
   link_touching_corners(data, orientation);
 }
 
+/// The rings of the input polygon of `data` as set_points() took them
+/// (without the points that the triangulation added inside edges).
+template <class Point_2, class FT>
+std::vector<std::vector<Point_2> > input_rings(const Medial_axis_data<Point_2, FT>& data)
+{
+  std::vector<std::vector<Point_2> > rings;
+  rings.reserve(data.ring_start.size() - 1);
+  for(std::size_t r = 0; r + 1 < data.ring_start.size(); ++r)
+    rings.emplace_back(data.points.begin() + data.ring_start[r], data.points.begin() + data.ring_start[r + 1]);
+  return rings;
+}
+
 // The kernel of the points of an input.
 template <class Input, class = void>
 struct Input_kernel {

@@ -43,12 +43,16 @@ namespace internal {
 /// in the ring as written, and its successor along the ring with the
 /// interior on the left.
 struct Point_info {
-  int ring = -1, index = -1;
+  int ring : 31;
+  bool reversed : 1;      // the ring was given in the other orientation
+  int index = -1;
   int next = -1;
-  bool reversed = false;  // the ring was given in the other orientation
   // the input edge from this point to `next` (ring, index as written); where
   // rings touch, `next` joins the corners of the interior (see set_points())
   int edge_ring = -1, edge_index = -1;
+
+  // (20 bytes, not 24: 2.4 MB of the peak of a one-shot of 600,000 points)
+  Point_info() : ring(-1), reversed(false) {}
 };
 
 /// The data of a medial axis: the input points and the half-edge structure.

@@ -415,12 +415,8 @@ private:
     }
     for(int y = 0; y < 2; ++y) {
       if(add[y].empty()) continue;
-      const Data& d = *in_[y];
-      std::vector<std::vector<Point_2> > rings;
-      for(std::size_t r = 0; r + 1 < d.ring_start.size(); ++r)
-        rings.emplace_back(d.points.begin() + d.ring_start[r], d.points.begin() + d.ring_start[r + 1]);
       noded_[y] = std::make_shared<Data>();
-      set_points(*noded_[y], with_nodes(rings, add[y], &origin_[y]), traits_.orientation_2_object());
+      set_points(*noded_[y], with_nodes(input_rings(*in_[y]), add[y], &origin_[y]), traits_.orientation_2_object());
       in_[y] = noded_[y].get();
       count_corners(y);
       prev_[y].clear();
@@ -772,8 +768,11 @@ private:
     for(std::size_t f = 0; f < data.hds.face_capacity(); ++f) {
       Hds_face& F = data.hds.face(int(f));
       const int x = f < faces_a ? 0 : 1;
-      renumber(x, F.p0);
-      renumber(x, F.p1);
+      int p[2] = {F.p0, F.p1};   // (bit-fields)
+      renumber(x, p[0]);
+      renumber(x, p[1]);
+      F.p0 = p[0];
+      F.p1 = p[1];
     }
     for(std::size_t v = 0; v < data.hds.vertex_capacity(); ++v) {
       auto& V = data.hds.vertex(int(v));
