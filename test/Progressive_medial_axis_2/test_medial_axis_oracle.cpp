@@ -1434,6 +1434,15 @@ void regression_tests(Checker<Traits>& checker, const Options&)
       checker.compare(again, "one-shot's way out", true, f, rings);
       CHECK(redone.region_growing_one_shots == 1 && redone.anomalies == 0,
             f << ": the forced way out was not taken (" << redone.region_growing_one_shots << ")");
+      // the same with rings given up: freed once copied, the way out starts
+      // again from rings rebuilt from the engine's points (input_rings())
+      auto given_up = CGAL::Progressive_medial_axes::internal::rings_of<typename Traits::Kernel>(rings);
+      CGAL::Progressive_medial_axis_statistics rebuilt;
+      const auto from_rebuilt = CGAL::medial_axis_2(std::move(given_up), Traits(), CGAL::CHECK_INPUT, &rebuilt);
+      checker.compare(from_rebuilt, "one-shot's way out from rings given up", true, f, rings);
+      CHECK(rebuilt.region_growing_one_shots == 1 && rebuilt.anomalies == 0 && given_up.empty(),
+            f << ": with rings given up, the forced way out was not taken (" << rebuilt.region_growing_one_shots
+              << ") or the rings were kept (" << given_up.size() << ")");
     }
     ++count;
   }
