@@ -662,11 +662,13 @@ one_shot_medial_axis(const std::vector<std::vector<typename Traits::Kernel::Poin
   set_points(*data, rings, traits.orientation_2_object());
   stats.input_vertices = data->points.size();
   stats.holes = rings.size() - 1;
-  // the rings, for the drivers that start again from them
+  // the rings, for the drivers that start again from them (rebuilt once,
+  // from the points, if the caller gave them up)
   std::vector<std::vector<typename Kernel::Point_2> > rebuilt;
   auto input = [&]() -> const std::vector<std::vector<typename Kernel::Point_2> >& {
     if(owned == nullptr) return rings;
-    rebuilt = input_rings(*data);
+    if(rebuilt.empty())
+      rebuilt = input_rings(*data);
     return rebuilt;
   };
   if(owned != nullptr)

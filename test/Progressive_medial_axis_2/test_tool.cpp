@@ -615,7 +615,7 @@ void repair(const std::string& data)
     return;
   }
   for(const char* f : {"crossing.wkt", "overlap.wkt", "spike.wkt", "zero_length_edge.wkt", "hole_outside.wkt",
-                       "hole_in_hole.wkt", "t_crossing.wkt"}) {
+                       "hole_in_hole.wkt", "t_crossing.wkt", "crossing_hole_groups.wkt", "holes_around_island.wkt"}) {
     const std::string file = data + "/invalid/" + f, fixed = tmp + "/repaired.wkt";
     Result r = run(tool + " --repair --repaired-out " + fixed + " --pairs --stats " + file);
     CHECK(r.status == 0, f << " --repair: exit status " << r.status << ": " << r.err);
@@ -633,14 +633,23 @@ void repair(const std::string& data)
   // as given: a hole outside the outer ring becomes a polygon (with the holes
   // inside it united with it), one inside another hole adds nothing,
   // zero-length edges and spikes are dropped; the outer ring inside a hole
-  // leaves nothing
+  // leaves nothing; the groups of rings that cross are found in one pass and
+  // each mended at once (two groups of holes, a hole across the outer ring,
+  // a hole left as given), but holes whose union encloses an island are
+  // left to GEOS on the whole polygon
   for(const auto& c : std::vector<std::array<std::string, 2> >{
         {"hole_outside.wkt", "MULTIPOLYGON (((0 0, 4 0, 4 4, 0 4, 0 0)), ((5 5, 6 5, 6 6, 5 5)))"},
         {"hole_outside_nested.wkt", "MULTIPOLYGON (((0 0, 4 0, 4 4, 0 4, 0 0)), ((6 1, 9 1, 9 4, 6 4, 6 1)))"},
         {"hole_in_hole.wkt", "POLYGON ((0 0, 10 0, 10 10, 0 10, 0 0), (1 1, 1 9, 9 9, 9 1, 1 1))"},
         {"spike.wkt", "POLYGON ((0 0, 4 0, 4 4, 2 4, 2 5, 0 4, 0 0))"},
         {"zero_length_edge.wkt", "POLYGON ((0 0, 4 0, 4 4, 0 4, 0 0))"},
-        {"spike_hole.wkt", "POLYGON ((0 0, 10 0, 10 10, 0 10, 0 0), (1 1, 1 3, 3 3, 3 1, 1 1))"}}) {
+        {"spike_hole.wkt", "POLYGON ((0 0, 10 0, 10 10, 0 10, 0 0), (1 1, 1 3, 3 3, 3 1, 1 1))"},
+        {"crossing_hole_groups.wkt",
+         "POLYGON ((0 20, 20 20, 20 7, 18 7, 18 5, 20 5, 20 0, 0 0, 0 20), (1 4, 3 4, 3 6, 6 6, 6 3, 4 3, 4 1, 1 1, 1 4), "
+         "(8 10, 9 10, 9 11, 11 11, 11 9, 10 9, 10 8, 8 8, 8 10), (14 14, 14 15, 15 15, 15 14, 14 14))"},
+        {"holes_around_island.wkt",
+         "MULTIPOLYGON (((0 20, 20 20, 20 0, 0 0, 0 20), (1 3, 1 1, 3 1, 3 2, 4 2, 4 4, 2 4, 2 3, 1 3), "
+         "(5 15, 5 5, 15 5, 15 6, 17 6, 17 14, 15 14, 15 15, 5 15)), ((8 12, 14 12, 14 8, 8 8, 8 12)))"}}) {
     Result r = run(tool + " --repair --repaired-out " + tmp + "/dropped.wkt " + data + "/invalid/" + c[0]);
     CHECK(r.status == 0 && slurp(tmp + "/dropped.wkt") == c[1] + "\n",
           c[0] << " --repair: " << r.err << slurp(tmp + "/dropped.wkt"));

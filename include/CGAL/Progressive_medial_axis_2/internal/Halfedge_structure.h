@@ -490,7 +490,11 @@ public:
 
   /// Reserves room for the axis of `points` input points: about 2 faces
   /// and 4 vertices a point, 3 of them with disks.
-  void reserve_for_points(std::size_t points) { reserve(2 * points + 16, 4 * points + 16, 3 * points + 16); }
+  void reserve_for_points(std::size_t points)
+  {
+    const std::size_t faces = 2 * points + 16;
+    reserve(faces, 4 * points + 16, 3 * points + 16, 6 * faces);
+  }
 
   /// Reserves room for the axis of a part of `triangles` triangles of a
   /// divide and conquer, built in a structure of its own (on two threads or
@@ -508,10 +512,7 @@ public:
     reserve(t * 13 / 8, t * 21 / 8, t * 7 / 4, t * 17 / 2);
   }
 
-  void reserve(std::size_t faces, std::size_t vertices, std::size_t disks)
-  {
-    reserve(faces, vertices, disks, 6 * faces);
-  }
+private:
   void reserve(std::size_t faces, std::size_t vertices, std::size_t disks, std::size_t halfedges)
   {
     faces_.reserve(faces);
@@ -521,7 +522,6 @@ public:
     zero_length_.reserve(halfedges / 2);
   }
 
-private:
   enum Free_list { FREE_EDGES, FREE_VERTICES, FREE_DISKS, FREE_FACES };
   struct Free_change {
     Free_list list;

@@ -14,10 +14,12 @@
 #include <CGAL/Progressive_medial_axis_2/validate_polygon.h>
 
 #include <CGAL/Polygon_2_algorithms.h>
+#include <CGAL/box_intersection_d.h>
 #include <CGAL/number_utils.h>
 
 #include <algorithm>
 #include <cctype>
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -298,6 +300,78 @@ bool inside(const std::vector<Point_2>& hole, const std::vector<Point_2>& outer)
   return false;
 }
 
+// The groups of rings whose edges cross or overlap (a ring alone if two of
+// its own edges do), all found in one pass: the boxes of all the edges
+// (CGAL's box_self_intersection_d), then the exact test on the pairs whose
+// boxes meet.  A contact at one point (rings touching at a vertex, a vertex
+// in another edge) is valid and left out; so are the contacts the validator
+// rejects at such points (wedges that cross there), left to its next round.
+// Each group is sorted, the groups by their first ring.
+template <class Point_2>
+std::vector<std::vector<std::size_t> >
+crossing_groups(const CGAL::Progressive_medial_axes::Rings<Point_2>& rings)
+{
+  typedef typename CGAL::Kernel_traits<Point_2>::Kernel K;
+  typedef std::pair<std::uint32_t, std::uint32_t> Edge;   // ring, first vertex
+  typedef CGAL::Box_intersection_d::Box_with_info_d<double, 2, Edge> Box;
+  const K k;
+  const auto orientation = k.orientation_2_object();
+  const auto compare_xy = k.compare_xy_2_object();
+  std::size_t edges = 0;
+  for(const auto& ring : rings) edges += ring.size();
+  std::vector<Box> boxes;
+  boxes.reserve(edges);
+  for(std::size_t r = 0; r < rings.size(); ++r)
+    for(std::size_t i = 0; i < rings[r].size(); ++i)
+      boxes.emplace_back(rings[r][i].bbox() + rings[r][(i + 1) % rings[r].size()].bbox(),
+                         Edge(std::uint32_t(r), std::uint32_t(i)));
+  std::vector<std::size_t> parent(rings.size());   // union-find over the rings
+  for(std::size_t r = 0; r < parent.size(); ++r) parent[r] = r;
+  auto find = [&](std::size_t r) {
+    while(parent[r] != r) r = parent[r] = parent[parent[r]];
+    return r;
+  };
+  std::vector<char> bad(rings.size(), 0);
+  auto cross_or_overlap = [&](const Point_2& a, const Point_2& b, const Point_2& c, const Point_2& d) {
+    const CGAL::Orientation o1 = orientation(a, b, c), o2 = orientation(a, b, d);
+    if(o1 == CGAL::COLLINEAR && o2 == CGAL::COLLINEAR) {   // on one line: do they share more than a point?
+      const Point_2& lo1 = compare_xy(a, b) == CGAL::SMALLER ? a : b;
+      const Point_2& hi1 = &lo1 == &a ? b : a;
+      const Point_2& lo2 = compare_xy(c, d) == CGAL::SMALLER ? c : d;
+      const Point_2& hi2 = &lo2 == &c ? d : c;
+      const Point_2& lo = compare_xy(lo1, lo2) == CGAL::SMALLER ? lo2 : lo1;
+      const Point_2& hi = compare_xy(hi1, hi2) == CGAL::SMALLER ? hi1 : hi2;
+      return compare_xy(lo, hi) == CGAL::SMALLER;
+    }
+    if(o1 == CGAL::COLLINEAR || o2 == CGAL::COLLINEAR || o1 == o2) return false;
+    const CGAL::Orientation o3 = orientation(c, d, a), o4 = orientation(c, d, b);
+    return o3 != CGAL::COLLINEAR && o4 != CGAL::COLLINEAR && o3 != o4;
+  };
+  // (a cutoff of 1,000 boxes, not CGAL's default 10: a third faster on a
+  // polygon of a million vertices)
+  auto test = [&](const Box& x, const Box& y) {
+    const std::size_t r = x.info().first, s = y.info().first, i = x.info().second, j = y.info().second;
+    const std::size_t n = rings[r].size();
+    if(r == s && ((i + 1) % n == j || (j + 1) % n == i)) return;   // neighbours: a spike at most, removed before
+    if(!cross_or_overlap(rings[r][i], rings[r][(i + 1) % n], rings[s][j], rings[s][(j + 1) % rings[s].size()])) return;
+    bad[r] = bad[s] = 1;
+    parent[find(r)] = find(s);
+  };
+  CGAL::box_self_intersection_d(boxes.begin(), boxes.end(), test, CGAL::Box_intersection_d::Box_traits_d<Box>(), 1000);
+  std::vector<std::vector<std::size_t> > groups;
+  std::vector<std::size_t> group_of(rings.size(), std::size_t(-1));
+  for(std::size_t r = 0; r < rings.size(); ++r) {
+    if(!bad[r]) continue;
+    std::size_t& g = group_of[find(r)];
+    if(g == std::size_t(-1)) {
+      g = groups.size();
+      groups.emplace_back();
+    }
+    groups[g].push_back(r);
+  }
+  return groups;
+}
+
 // The rings an error message names ("ring 3 edge 5 ... ring 7 edge 0").
 inline std::vector<std::size_t> rings_named(const std::string& message)
 {
@@ -327,7 +401,8 @@ adds nothing), computed locally where it can be: zero-length edges and
 spikes (zero-area folds) are removed, misplaced holes are dropped or become
 polygons, holes that cross or overlap each other (or themselves) are
 replaced by their union made valid, and an outer ring that crosses itself or
-a hole is made valid minus those holes, by GEOS on those rings only; the
+a hole is made valid minus those holes, by GEOS on those rings only (the
+groups of rings that cross are found together, in one pass); the
 rings left untouched keep their vertices as given.  GEOS repairs the whole
 polygon only where these do not suffice.  Throws `Input_error` if GEOS fails or the build has
 no GEOS.
@@ -350,6 +425,7 @@ repair_polygon(const CGAL::Progressive_medial_axes::Rings<Point_2>& rings)
   Rings work = rings;
   std::vector<Rings> extra;   // pieces of the outer ring split off by its repair (with their holes)
   if(!internal::remove_folds(work)) return internal::geos_make_valid(std::vector<Rings>{rings}, false);
+  bool batch = true, batched = false;   // (see below)
   for(int round = 0; round < 64; ++round) {
     std::string error;
     std::vector<long> parent;
@@ -392,33 +468,64 @@ repair_polygon(const CGAL::Progressive_medial_axes::Rings<Point_2>& rings)
       if(!valid) return internal::geos_make_valid(std::vector<Rings>{rings}, false);
       return out;
     }
-    const std::vector<std::size_t> named = internal::rings_named(error);
-    if(named.empty()) break;
-    std::vector<Rings> holes;
-    for(std::size_t r : named)
-      if(r != 0) holes.push_back(Rings{work[r]});
-    Rings next;
-    if(std::find(named.begin(), named.end(), std::size_t(0)) != named.end()) {
-      // the outer ring: made valid, minus the holes it meets; the largest
-      // piece is the outer ring from now on, the others are split off
-      std::vector<Rings> pieces = internal::geos_make_valid(std::vector<Rings>{Rings{work[0]}}, false, holes);
-      if(pieces.empty()) break;
-      std::size_t main = 0;
-      for(std::size_t q = 1; q < pieces.size(); ++q)
-        if(pieces[q][0].size() > pieces[main][0].size()) main = q;
-      next = std::move(pieces[main]);
-      for(std::size_t q = 0; q < pieces.size(); ++q)
-        if(q != main) extra.push_back(std::move(pieces[q]));
-    } else {
-      // holes that cross or overlap each other (or themselves): their union,
-      // made valid, replaces them, if it has no islands
-      const std::vector<Rings> merged = internal::geos_make_valid(holes, true);
-      if(std::any_of(merged.begin(), merged.end(), [](const Rings& m) { return m.size() > 1; })) break;
-      next.push_back(std::move(work[0]));
-      for(const Rings& m : merged) next.push_back(m[0]);
+    // The rings to mend, in groups mended together: all the groups of rings
+    // that cross or overlap, found in one pass, as long as that mends some;
+    // then the rings each error names, one error at a time.  (Russia in
+    // land-10m, a million vertices and 190,000 holes, took 9 rounds and 4 s
+    // one error at a time; the pass costs about one and a half checks.)
+    batch = !batched;
+    std::vector<std::vector<std::size_t> > groups;
+    if(batch) groups = internal::crossing_groups(work);
+    if(groups.empty()) {
+      batched = true;
+      groups.push_back(internal::rings_named(error));
+      if(groups[0].empty()) break;
     }
+    Rings next(1);                  // the outer ring (next[0]) and the holes of its piece
+    Rings mended;                   // the holes mended
+    std::vector<char> done(work.size(), 0);
+    bool give_up = false;
+    for(const std::vector<std::size_t>& group : groups) {
+      std::vector<Rings> holes;
+      for(std::size_t r : group)
+        if(r != 0) holes.push_back(Rings{work[r]});
+      if(std::find(group.begin(), group.end(), std::size_t(0)) != group.end()) {
+        // the outer ring: made valid, minus the holes it meets; the largest
+        // piece is the outer ring from now on, the others are split off
+        std::vector<Rings> pieces = internal::geos_make_valid(std::vector<Rings>{Rings{work[0]}}, false, holes);
+        if(pieces.empty()) {
+          give_up = true;
+          break;
+        }
+        std::size_t main = 0;
+        for(std::size_t q = 1; q < pieces.size(); ++q)
+          if(pieces[q][0].size() > pieces[main][0].size()) main = q;
+        next = std::move(pieces[main]);
+        for(std::size_t q = 0; q < pieces.size(); ++q)
+          if(q != main) extra.push_back(std::move(pieces[q]));
+      } else {
+        // holes that cross or overlap each other (or themselves): their union,
+        // made valid, replaces them, if it has no islands (else, found in one
+        // pass, the group is left to the rounds that follow)
+        std::vector<Rings> merged = internal::geos_make_valid(holes, true);
+        if(std::any_of(merged.begin(), merged.end(), [](const Rings& m) { return m.size() > 1; })) {
+          if(batch) continue;
+          give_up = true;
+          break;
+        }
+        for(Rings& m : merged) mended.push_back(std::move(m[0]));
+      }
+      for(std::size_t r : group) done[r] = 1;
+    }
+    if(give_up) break;
+    if(std::find(done.begin(), done.end(), char(1)) == done.end()) {   // (only groups with islands)
+      batched = true;
+      continue;
+    }
+    if(!done[0]) next[0] = std::move(work[0]);
+    for(std::vector<Point_2>& m : mended) next.push_back(std::move(m));
     for(std::size_t r = 1; r < work.size(); ++r)
-      if(std::find(named.begin(), named.end(), r) == named.end()) next.push_back(std::move(work[r]));
+      if(!done[r]) next.push_back(std::move(work[r]));
     work.swap(next);
     if(!internal::remove_folds(work)) break;
   }
