@@ -306,10 +306,12 @@ bool inside(const std::vector<Point_2>& hole, const std::vector<Point_2>& outer)
 // boxes meet.  A contact at one point (rings touching at a vertex, a vertex
 // in another edge) is valid and left out; so are the contacts the validator
 // rejects at such points (wedges that cross there), left to its next round.
-// Each group is sorted, the groups by their first ring.
+// Each group is sorted, the groups by their first ring.  `meets_outer[r]`
+// says whether hole r meets the outer ring itself (crosses it, overlaps it
+// or touches it).
 template <class Point_2>
 std::vector<std::vector<std::size_t> >
-crossing_groups(const CGAL::Progressive_medial_axes::Rings<Point_2>& rings)
+crossing_groups(const CGAL::Progressive_medial_axes::Rings<Point_2>& rings, std::vector<char>& meets_outer)
 {
   typedef typename CGAL::Kernel_traits<Point_2>::Kernel K;
   typedef std::pair<std::uint32_t, std::uint32_t> Edge;   // ring, first vertex
@@ -317,6 +319,7 @@ crossing_groups(const CGAL::Progressive_medial_axes::Rings<Point_2>& rings)
   const K k;
   const auto orientation = k.orientation_2_object();
   const auto compare_xy = k.compare_xy_2_object();
+  const auto do_intersect = k.do_intersect_2_object();
   std::size_t edges = 0;
   for(const auto& ring : rings) edges += ring.size();
   std::vector<Box> boxes;
@@ -332,6 +335,7 @@ crossing_groups(const CGAL::Progressive_medial_axes::Rings<Point_2>& rings)
     return r;
   };
   std::vector<char> bad(rings.size(), 0);
+  meets_outer.assign(rings.size(), 0);
   auto cross_or_overlap = [&](const Point_2& a, const Point_2& b, const Point_2& c, const Point_2& d) {
     const CGAL::Orientation o1 = orientation(a, b, c), o2 = orientation(a, b, d);
     if(o1 == CGAL::COLLINEAR && o2 == CGAL::COLLINEAR) {   // on one line: do they share more than a point?
@@ -353,7 +357,10 @@ crossing_groups(const CGAL::Progressive_medial_axes::Rings<Point_2>& rings)
     const std::size_t r = x.info().first, s = y.info().first, i = x.info().second, j = y.info().second;
     const std::size_t n = rings[r].size();
     if(r == s && ((i + 1) % n == j || (j + 1) % n == i)) return;   // neighbours: a spike at most, removed before
-    if(!cross_or_overlap(rings[r][i], rings[r][(i + 1) % n], rings[s][j], rings[s][(j + 1) % rings[s].size()])) return;
+    const Point_2 &a = rings[r][i], &b = rings[r][(i + 1) % n], &c = rings[s][j], &d = rings[s][(j + 1) % rings[s].size()];
+    if((r == 0) != (s == 0) && !meets_outer[r + s] && do_intersect(typename K::Segment_2(a, b), typename K::Segment_2(c, d)))
+      meets_outer[r + s] = 1;
+    if(!cross_or_overlap(a, b, c, d)) return;
     bad[r] = bad[s] = 1;
     parent[find(r)] = find(s);
   };
@@ -402,7 +409,11 @@ spikes (zero-area folds) are removed, misplaced holes are dropped or become
 polygons, holes that cross or overlap each other (or themselves) are
 replaced by their union made valid, and an outer ring that crosses itself or
 a hole is made valid minus those holes, by GEOS on those rings only (the
-groups of rings that cross are found together, in one pass); the
+groups of rings that cross are found together, in one pass; as in GEOS, a
+hole that meets the outer ring as given is a hole, one apart from it a
+polygon, even if the holes met each other; one known difference: holes
+apart from the outer ring united with one that only touches it from
+outside make one polygon, where GEOS drops the touching one); the
 rings left untouched keep their vertices as given.  GEOS repairs the whole
 polygon only where these do not suffice.  Throws `Input_error` if GEOS fails or the build has
 no GEOS.
@@ -426,6 +437,11 @@ repair_polygon(const CGAL::Progressive_medial_axes::Rings<Point_2>& rings)
   std::vector<Rings> extra;   // pieces of the outer ring split off by its repair (with their holes)
   if(!internal::remove_folds(work)) return internal::geos_make_valid(std::vector<Rings>{rings}, false);
   bool batch = true, batched = false;   // (see below)
+  // As GEOS 3.11's structure method (GeometryFixer) does, each hole is a
+  // hole if it meets the outer ring as given (made valid), else a polygon of
+  // its own; the outer ring is then made valid minus the holes.
+  const std::vector<Point_2> outer = work[0];
+  bool outer_mended = false;
   for(int round = 0; round < 64; ++round) {
     std::string error;
     std::vector<long> parent;
@@ -455,6 +471,18 @@ repair_polygon(const CGAL::Progressive_medial_axes::Rings<Point_2>& rings)
           else outside.push_back(Rings{std::move(work[r])});
         }
       }
+      if(outer_mended && !outside.empty()) {
+        // a hole that meets the outer ring as given, now in what the outer
+        // ring lost to the holes, adds nothing
+        Rings probe(1, outer);
+        for(const Rings& x : outside) probe.push_back(x[0]);
+        std::vector<char> meets;
+        internal::crossing_groups(probe, meets);
+        std::vector<Rings> kept;
+        for(std::size_t q = 0; q < outside.size(); ++q)
+          if(!meets[q + 1] && !internal::inside(outside[q][0], outer)) kept.push_back(std::move(outside[q]));
+        outside.swap(kept);
+      }
       for(Rings& x : outside) extra.push_back(std::move(x));
       bool valid = true;
       for(Rings& x : extra) {
@@ -475,21 +503,31 @@ repair_polygon(const CGAL::Progressive_medial_axes::Rings<Point_2>& rings)
     // one error at a time; the pass costs about one and a half checks.)
     batch = !batched;
     std::vector<std::vector<std::size_t> > groups;
-    if(batch) groups = internal::crossing_groups(work);
+    std::vector<char> meets_outer;
+    if(batch) groups = internal::crossing_groups(work, meets_outer);
     if(groups.empty()) {
       batched = true;
       groups.push_back(internal::rings_named(error));
       if(groups[0].empty()) break;
+      meets_outer.assign(work.size(), 0);
+      if(std::find(groups[0].begin(), groups[0].end(), std::size_t(0)) != groups[0].end())
+        for(std::size_t r : groups[0]) meets_outer[r] = 1;
     }
     Rings next(1);                  // the outer ring (next[0]) and the holes of its piece
     Rings mended;                   // the holes mended
     std::vector<char> done(work.size(), 0);
     bool give_up = false;
-    for(const std::vector<std::size_t>& group : groups) {
+    for(std::vector<std::size_t> group : groups) {
+      const bool with_outer = std::find(group.begin(), group.end(), std::size_t(0)) != group.end();
+      if(with_outer)   // (holes apart from the outer ring as given, met by its holes only, stay: polygons)
+        group.erase(std::remove_if(group.begin(), group.end(),
+                                   [&](std::size_t r) { return r != 0 && !meets_outer[r] && !internal::inside(work[r], outer); }),
+                    group.end());
       std::vector<Rings> holes;
       for(std::size_t r : group)
         if(r != 0) holes.push_back(Rings{work[r]});
-      if(std::find(group.begin(), group.end(), std::size_t(0)) != group.end()) {
+      if(with_outer) {
+        outer_mended = true;
         // the outer ring: made valid, minus the holes it meets; the largest
         // piece is the outer ring from now on, the others are split off
         std::vector<Rings> pieces = internal::geos_make_valid(std::vector<Rings>{Rings{work[0]}}, false, holes);
