@@ -478,9 +478,27 @@ repair_polygon(const CGAL::Progressive_medial_axes::Rings<Point_2>& rings)
         for(const Rings& x : outside) probe.push_back(x[0]);
         std::vector<char> meets;
         internal::crossing_groups(probe, meets);
-        std::vector<Rings> kept;
+        // the others: inside it or not, by the check's nesting where the
+        // outer ring as given is valid (one sweep), else one by one
+        Rings apart(1, outer);
+        std::vector<std::size_t> which;
         for(std::size_t q = 0; q < outside.size(); ++q)
-          if(!meets[q + 1] && !internal::inside(outside[q][0], outer)) kept.push_back(std::move(outside[q]));
+          if(!meets[q + 1]) {
+            apart.push_back(outside[q][0]);
+            which.push_back(q);
+          }
+        std::vector<long> nesting;
+        try {
+          CGAL::Progressive_medial_axes::internal::Polygon_rings_validator<K> validator(apart, true);
+          validator.run(false);
+          nesting = validator.parents();
+        } catch(const Input_error&) {
+        }
+        std::vector<Rings> kept;
+        for(std::size_t k = 0; k < which.size(); ++k) {
+          Rings& x = outside[which[k]];
+          if(!(nesting.empty() ? internal::inside(x[0], outer) : nesting[k + 1] == 0)) kept.push_back(std::move(x));
+        }
         outside.swap(kept);
       }
       for(Rings& x : outside) extra.push_back(std::move(x));
