@@ -379,6 +379,23 @@ crossing_groups(const CGAL::Progressive_medial_axes::Rings<Point_2>& rings, std:
   return groups;
 }
 
+// The check of `rings` (rings may touch, the nesting is left out) and the
+// ring directly enclosing each ring (Polygon_rings_validator::parents());
+// empty, with the check's message in `error`, if it fails.
+template <class Point_2>
+std::vector<long> checked_parents(const CGAL::Progressive_medial_axes::Rings<Point_2>& rings, std::string& error)
+{
+  typedef typename CGAL::Kernel_traits<Point_2>::Kernel K;
+  try {
+    CGAL::Progressive_medial_axes::internal::Polygon_rings_validator<K> validator(rings, true);
+    validator.run(false);
+    return validator.parents();
+  } catch(const CGAL::Progressive_medial_axes::Input_error& e) {
+    error = e.what();
+  }
+  return {};
+}
+
 // The rings an error message names ("ring 3 edge 5 ... ring 7 edge 0").
 inline std::vector<std::size_t> rings_named(const std::string& message)
 {
@@ -428,7 +445,6 @@ repair_polygon(const CGAL::Progressive_medial_axes::Rings<Point_2>& rings)
   throw Input_error("--repair needs GEOS: this build of the tool has none (install libgeos-dev and rebuild)");
 #else
   typedef CGAL::Progressive_medial_axes::Rings<Point_2> Rings;
-  typedef typename CGAL::Kernel_traits<Point_2>::Kernel K;
   // Local repairs first, each exact or done by GEOS on a few rings only,
   // then the check again; GEOS on the whole polygon where they do not
   // suffice.  The area stays that of the structure method: the outer ring
@@ -436,7 +452,7 @@ repair_polygon(const CGAL::Progressive_medial_axes::Rings<Point_2>& rings)
   Rings work = rings;
   std::vector<Rings> extra;   // pieces of the outer ring split off by its repair (with their holes)
   if(!internal::remove_folds(work)) return internal::geos_make_valid(std::vector<Rings>{rings}, false);
-  bool batch = true, batched = false;   // (see below)
+  bool batched = false;   // (see below)
   // As GEOS 3.11's structure method (GeometryFixer) does, each hole is a
   // hole if it meets the outer ring as given (made valid), else a polygon of
   // its own; the outer ring is then made valid minus the holes.
@@ -444,14 +460,7 @@ repair_polygon(const CGAL::Progressive_medial_axes::Rings<Point_2>& rings)
   bool outer_mended = false;
   for(int round = 0; round < 64; ++round) {
     std::string error;
-    std::vector<long> parent;
-    try {
-      CGAL::Progressive_medial_axes::internal::Polygon_rings_validator<K> validator(work, true);
-      validator.run(false);
-      parent = validator.parents();
-    } catch(const Input_error& e) {
-      error = e.what();
-    }
+    const std::vector<long> parent = internal::checked_parents(work, error);
     if(error.empty()) {
       // As GEOS's structure method does: a hole inside another hole adds
       // nothing (the holes are united), a hole disjoint from the outer ring
@@ -487,13 +496,8 @@ repair_polygon(const CGAL::Progressive_medial_axes::Rings<Point_2>& rings)
             apart.push_back(outside[q][0]);
             which.push_back(q);
           }
-        std::vector<long> nesting;
-        try {
-          CGAL::Progressive_medial_axes::internal::Polygon_rings_validator<K> validator(apart, true);
-          validator.run(false);
-          nesting = validator.parents();
-        } catch(const Input_error&) {
-        }
+        std::string invalid;
+        const std::vector<long> nesting = internal::checked_parents(apart, invalid);
         std::vector<Rings> kept;
         for(std::size_t k = 0; k < which.size(); ++k) {
           Rings& x = outside[which[k]];
@@ -519,7 +523,7 @@ repair_polygon(const CGAL::Progressive_medial_axes::Rings<Point_2>& rings)
     // then the rings each error names, one error at a time.  (Russia in
     // land-10m, a million vertices and 190,000 holes, took 9 rounds and 4 s
     // one error at a time; the pass costs about one and a half checks.)
-    batch = !batched;
+    const bool batch = !batched;
     std::vector<std::vector<std::size_t> > groups;
     std::vector<char> meets_outer;
     if(batch) groups = internal::crossing_groups(work, meets_outer);
