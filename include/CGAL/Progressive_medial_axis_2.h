@@ -508,6 +508,17 @@ inline std::atomic<bool>& one_shot_way_out_forced()
   return forced;
 }
 
+/// For tests of the divide and conquer stopped (see
+/// `abandon_events_per_triangle`): while 1, every one-shot that probes its
+/// parts stops its divide and conquer after a few triangles; while 2, the
+/// boundary evolution that follows gives up at once too, and the one-shot
+/// runs again without stopping.
+inline std::atomic<int>& one_shot_abandon_forced()
+{
+  static std::atomic<int> forced(0);
+  return forced;
+}
+
 /// Whether a one-shot whose merges met `anomalies` anomalies takes the way
 /// out below.
 inline bool one_shot_takes_way_out(std::size_t anomalies)
@@ -721,8 +732,40 @@ one_shot_medial_axis(const std::vector<std::vector<typename Traits::Kernel::Poin
   }
   if(parts != 0 && probe_limit != 0)   // (the divide and conquer goes on from the triangles probed)
     driver.probe(how.first, probe_seeds, probe_limit);
+  // where the probe ran and missed parts whose merges cross thousands of
+  // cells a triangle: boundary evolution (see abandon_events_per_triangle)
+  const bool may_abandon = parts == 0 && how.first >= probe_seeds;
+  const int forced = one_shot_abandon_forced().load(std::memory_order_relaxed);
+  if(may_abandon)
+    driver.abandon_above(forced != 0 ? 0 : abandon_events_per_triangle, forced != 0 ? 0 : abandon_slack_triangles);
   data->hds.reserve_for_points(data->points.size());
   const Divide_and_conquer_counts counts = divide_and_conquer(driver, how.first, how.second);
+  if(driver.abandoned()) {
+    const std::vector<std::vector<typename Kernel::Point_2> >& given = input();   // (rebuilt from `data` if given up)
+    data.reset();
+    release_free_memory(stats.input_vertices);
+    const double threads = double(arena_threads());
+    auto evolved = std::make_shared<Data>();
+    const double budget = forced == 2 ? 0 : double(abandon_events_per_triangle) * double(T) / threads;
+    if(one_shot_by_boundary_evolution(given, traits, budget, *evolved, stats)) {
+      if(one_shot_takes_way_out(stats.anomalies)) {
+        evolved = std::make_shared<Data>();
+        one_shot_by_region_growing(given, traits, *evolved, stats);
+      }
+      stats.abandoned_divide_and_conquers = 1;
+      stats.merge_seconds = seconds_since(t0);
+      if(statistics)
+        *statistics = stats;
+      return Medial_axis_access::make<Kernel>(std::shared_ptr<const Data>(evolved));
+    }
+    // boundary evolution did no better (the budget of the divide and
+    // conquer at that rate): the one-shot again, without stopping
+    evolved.reset();
+    Medial_axis_2<Kernel> axis = one_shot_medial_axis(given, nullptr, traits, check, statistics, how.first, 0);
+    if(statistics)
+      statistics->abandoned_divide_and_conquers = 1;
+    return axis;
+  }
   stats.merge_seconds = seconds_since(t0);
   copy_counts(stats, counts);
   stats.parts = counts.parts;
@@ -779,7 +822,11 @@ between them.  Where the boundary is sampled so finely against the shape's
 width that a merge would cross dozens of cells (measured on a few
 triangles of four parts first, from 128 triangles on), the axis is
 computed by boundary evolution instead, all its steps done (see the user
-manual, "One shot: divide and conquer"); `statistics` then says so.  When
+manual, "One shot: divide and conquer"); `statistics` then says so.  Where
+the measure missed such triangles and the merges of a part cross hundreds
+of cells a triangle, the divide and conquer stops and boundary evolution
+computes the axis (or, where it does no better, the divide and conquer
+runs again without stopping); `statistics` says so too.  When
 the package is linked with oneTBB
 (`CGAL_LINKED_WITH_TBB`, the CMake target `CGAL::TBB_support`), the parts
 are computed in parallel, on the threads of the current `tbb::task_arena`

@@ -1390,7 +1390,7 @@ void union_tests(Checker<Traits>& checker, const Options& o)
 template <class Traits>
 void regression_tests(Checker<Traits>& checker, const Options&)
 {
-  std::size_t count = 0, steps = 0;
+  std::size_t count = 0, steps = 0, stopped = 0;
   for(const std::string& f : list_wkt(std::string(PMA_TEST_DATA) + "/regressions")) {
     Rings rings = pma_tool::read_polygon_file<Point>(f);
     // the whole axis, and the one-shot in the test's cycle of parts
@@ -1444,10 +1444,38 @@ void regression_tests(Checker<Traits>& checker, const Options&)
             f << ": with rings given up, the forced way out was not taken (" << rebuilt.region_growing_one_shots
               << ") or the rings were kept (" << given_up.size() << ")");
     }
+    // The divide and conquer stopped (abandon_events_per_triangle), forced
+    // where the probe kept it: (1) boundary evolution computes the axis,
+    // (2) it gives up too and the divide and conquer runs again without
+    // stopping; from rings given up, which are rebuilt from the engine's
+    // points before its structure is dropped.
+    for(int mode : {1, 2}) {
+      struct Forced {
+        explicit Forced(int m) { CGAL::Progressive_medial_axes::internal::one_shot_abandon_forced() = m; }
+        ~Forced() { CGAL::Progressive_medial_axes::internal::one_shot_abandon_forced() = 0; }
+      } forced(mode);
+      auto given_up = CGAL::Progressive_medial_axes::internal::rings_of<typename Traits::Kernel>(rings);
+      CGAL::Progressive_medial_axis_statistics st;
+      const auto again = CGAL::medial_axis_2(std::move(given_up), Traits(), CGAL::CHECK_INPUT, &st);
+      checker.compare(again, mode == 1 ? "divide and conquer stopped" : "divide and conquer stopped, then again",
+                      true, f, rings);
+      // (where the one-shot probes its parts, and the probe kept the divide and conquer)
+      if(CGAL::Progressive_medial_axes::internal::default_parts(stats.triangles) >=
+           CGAL::Progressive_medial_axes::internal::probe_seeds &&
+         std::is_floating_point<typename Traits::FT>::value && stats.boundary_evolution_one_shots == 0) {
+        CHECK(st.abandoned_divide_and_conquers == 1 && st.boundary_evolution_one_shots == (mode == 1 ? 1u : 0u) &&
+                st.anomalies == 0,
+              f << ": the divide and conquer stopped (mode " << mode << "): " << st.abandoned_divide_and_conquers
+                << " stopped, " << st.boundary_evolution_one_shots << " by boundary evolution, " << st.anomalies
+                << " anomalies");
+        ++stopped;
+      }
+    }
     ++count;
   }
   std::cout << "regressions: " << count << " shapes, whole, " << steps
-            << " steps, the default one-shot and its way out\n";
+            << " steps, the default one-shot and its way out; the divide and conquer stopped " << stopped
+            << " times\n";
 }
 
 // The exact-decision traits' centre hints (Disk_hint): kept as a centre

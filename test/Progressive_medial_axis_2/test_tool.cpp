@@ -797,6 +797,20 @@ int main(int argc, char** argv)
                        "syn_t_both_sides", "syn_t_both_sides_two_holes", "syn_t_both_sides_square"})
     pairs_against_oracle(data + "/touching/" + f + ".wkt", {-1, 1, 2, 3, 5, 50, 400});
   pairs_against_oracle(data + "/touching/c1m_PNG_21.wkt", {-1, 3000});
+  // parts that cross thousands of cells a triangle on two threads: the
+  // divide and conquer stops, boundary evolution computes the axis (the
+  // oracle test compares it), the same pairs as on one thread
+  {
+    const std::string f = data + "/regressions/circle_hole_parts_stop.wkt";
+    Result two = run(tool + " --threads 2 --stats " + f);
+    CHECK(two.status == 0 && stats_value(two.out, "oneshot_dc_abandoned") == "1" &&
+            stats_value(two.out, "oneshot_boundary_evolution") == "1",
+          f << " on two threads: oneshot_dc_abandoned " << stats_value(two.out, "oneshot_dc_abandoned")
+            << ", oneshot_boundary_evolution " << stats_value(two.out, "oneshot_boundary_evolution"));
+    Result p1 = run(tool + " --threads 1 --pairs " + f), p2 = run(tool + " --threads 2 --pairs " + f);
+    CHECK(p1.status == 0 && p2.status == 0 && !p1.out.empty() && p1.out == p2.out,
+          f << ": the pairs on one and two threads differ");
+  }
   // a one-shot's `steps` (counted without an axis) is the progressive run's
   for(const std::string f : {"/syn_cheese1k.wkt", "/touching/syn_pinch.wkt", "/touching/c1m_PNG_21.wkt"}) {
     Result one = run(tool + " --stats " + data + f), step = run(tool + " --stats --step 0 " + data + f);

@@ -470,6 +470,7 @@ void add_statistics(CGAL::Progressive_medial_axis_statistics& s, const CGAL::Pro
   s.recomputed_steps += t.recomputed_steps;
   s.boundary_evolution_one_shots += t.boundary_evolution_one_shots;
   s.region_growing_one_shots += t.region_growing_one_shots;
+  s.abandoned_divide_and_conquers += t.abandoned_divide_and_conquers;
 }
 
 // One polygon of the input, its axis and what is computed from it.
@@ -1173,6 +1174,7 @@ int run(const Options& o)
                   s.parts, s.parts_seconds_sum, s.parts_seconds_max, s.join_seconds, work, read_seconds + span);
       std::printf("oneshot_boundary_evolution %zu\n", s.boundary_evolution_one_shots);
       std::printf("oneshot_region_growing %zu\n", s.region_growing_one_shots);
+      std::printf("oneshot_dc_abandoned %zu\n", s.abandoned_divide_and_conquers);
       std::printf("triangulation_split %zu\n", s.split_triangulations);
     }
     if(!o.union_with.empty())

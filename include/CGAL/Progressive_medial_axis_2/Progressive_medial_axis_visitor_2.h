@@ -58,6 +58,7 @@ struct Progressive_medial_axis_statistics {
   double parts_seconds_max = 0;    ///< one shot: the longest task of a part
   double join_seconds = 0;         ///< one shot: joining the parts and the merges between them (sequential); with boundary evolution, also its steps
   std::size_t boundary_evolution_one_shots = 0; ///< one shot: 1 where boundary evolution computed the axis (finely sampled boundaries, see `medial_axis_2()`), else 0
+  std::size_t abandoned_divide_and_conquers = 0; ///< one shot: 1 where the divide and conquer stopped because the merges of a part crossed hundreds of cells a triangle, and boundary evolution computed the axis (or, where it did no better, the divide and conquer again without stopping), else 0
   std::size_t region_growing_one_shots = 0; ///< one shot: 1 where the divide and conquer (or boundary evolution) met an anomaly and region growing computed the axis again (see `medial_axis_2()`; with exact decisions, for the double model too), else 0
 };
 

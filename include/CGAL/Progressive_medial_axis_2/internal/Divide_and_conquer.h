@@ -199,6 +199,21 @@ constexpr double min_parallel_seconds = 0.016;
 /// (RESULTS.md, thirty-eighth session).
 constexpr std::size_t min_release_points = 262144;
 
+/// A one-shot's divide and conquer stops (Divide_and_conquer::abandon_above())
+/// where the merges of one part cross more than this many cells a triangle
+/// (switches and vanishings), after a start of `abandon_slack_triangles`
+/// triangles' worth, and boundary evolution computes the axis instead.  The
+/// parts of every shape of the tests and benchmarks crossed at most 40 a
+/// triangle (country outlines 6 to 32, glyphs up to 40); a circle of
+/// 50,000 vertices with a rectangular hole near its edge, whose triangles
+/// fan from the hole's long edges to thousands of vertices of the circle,
+/// crossed 3,000 to 5,000 a triangle in its worst parts, where each merge
+/// rebuilds the axis around the fan: 17.6 s by divide and conquer on 2
+/// threads, 0.94 s by boundary evolution (RESULTS.md, "Parts that cross
+/// thousands of cells a triangle", fifty-seventh session).
+constexpr std::size_t abandon_events_per_triangle = 256;
+constexpr std::size_t abandon_slack_triangles = 64;
+
 /// Whether a one-shot of `min_release_points` or more gives the memory it
 /// freed back to the system (on by default).  A program that goes on
 /// computing after the axis, and lets glibc keep freed memory for that work,
@@ -478,31 +493,37 @@ public:
     };
     auto build = [&](std::size_t p) {
       const auto t0 = std::chrono::steady_clock::now();
-      run_part([&] {
-        const bool own = p > 0 && !one_thread;
-        Hds& hds = own ? structures[p] : engine_.hds();
-        if(own) {
-          {
-            std::lock_guard<std::mutex> pool_lock(pool_mutex);
-            if(!pool.empty()) {
-              hds = std::move(pool.back());
-              pool.pop_back();
+      bool stopped = abandoned();   // (see abandon_above(): the part is left as it is)
+      if(!stopped) {
+        run_part([&] {
+          const bool own = p > 0 && !one_thread;
+          Hds& hds = own ? structures[p] : engine_.hds();
+          if(own) {
+            {
+              std::lock_guard<std::mutex> pool_lock(pool_mutex);
+              if(!pool.empty()) {
+                hds = std::move(pool.back());
+                pool.pop_back();
+              }
             }
+            hds.reserve_for_triangles(largest);
           }
-          hds.reserve_for_triangles(largest);
-        }
-        Part_progress progress;
-        if(p < probed_.size() && probed_[p])
-          progress = take_probed(p, hds, part_counts[p]);
-        Engine engine(hds, engine_.points(), engine_.traits());
-        build_part(engine, int(p), part_counts[p], progress);
-        engine.resolve_pending();
-        record_join_sides(p);
-        release_part(p);
-      });
+          Part_progress progress;
+          if(p < probed_.size() && probed_[p])
+            progress = take_probed(p, hds, part_counts[p]);
+          Engine engine(hds, engine_.points(), engine_.traits());
+          build_part(engine, int(p), part_counts[p], progress);
+          stopped = abandoned();
+          if(stopped)
+            return;
+          engine.resolve_pending();
+          record_join_sides(p);
+          release_part(p);
+        });
+      }
       if(++parts_built == P)   // (no part reads the triangles any more)
         free_triangles();
-      if(!one_thread)
+      if(!one_thread && !stopped)   // (a part stopped is never moved: nor are those after it)
         move_built_parts(p);
       part_seconds[p] = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     };
@@ -514,7 +535,7 @@ public:
       parallel = false;
       double seconds = 0;
       std::size_t done = 0;
-      while(next_to_start < P && !parallel) {
+      while(next_to_start < P && !parallel && !abandoned()) {
         const std::size_t p = next_to_start++;
         build(p);
         seconds += part_seconds[p];
@@ -539,6 +560,8 @@ public:
       counts.parts_seconds_sum += t;
       counts.parts_seconds_max = (std::max)(counts.parts_seconds_max, t);
     }
+    if(abandoned())
+      return counts;
     const auto t_join = std::chrono::steady_clock::now();
 
     // 2. on one thread, the diagonals between parts (on several, the
@@ -554,6 +577,20 @@ public:
   }
 
   std::size_t number_of_parts() const { return roots_.size(); }
+
+  /// From now on, run() stops building parts as soon as the merges of one
+  /// part have crossed more than `events_per_triangle` cells (switches and
+  /// vanishings) a triangle of it, after a start of `slack_triangles`
+  /// triangles' worth; abandoned() then says so, and the engine's structure
+  /// is to be dropped.  (Without this call, it never stops; with 0 and 0,
+  /// at the first merge that crosses a cell, for tests.)
+  void abandon_above(std::size_t events_per_triangle, std::size_t slack_triangles)
+  {
+    may_abandon_ = true;
+    abandon_rate_ = events_per_triangle;
+    abandon_slack_ = slack_triangles;
+  }
+  bool abandoned() const { return abandoned_.load(std::memory_order_relaxed); }
 
   /// The mean number of events (switches and vanishings) of a merge where
   /// the axis grows one triangle at a time, as in a part: the first `limit`
@@ -852,8 +889,24 @@ private:
           if(w >= 0 && w != t && part_[std::size_t(w)] == p && added_[std::size_t(w)] && parent_[std::size_t(w)] != u)
             merge_along(engine, u, w, counts);
         }
+        if(abandon(counts, queue.size())) return;
       }
     }
+  }
+
+  // Whether the parts stop (see abandon_above()): the part whose `counts`
+  // are given, with `triangles` triangles, crossed too many cells, or
+  // another part did.
+  bool abandon(const Divide_and_conquer_counts& counts, std::size_t triangles)
+  {
+    if(!may_abandon_)
+      return false;
+    if(abandoned())
+      return true;
+    if(counts.switches + counts.vanishings <= abandon_rate_ * (triangles + abandon_slack_))
+      return false;
+    abandoned_.store(true, std::memory_order_relaxed);
+    return true;
   }
 
   // Merges the sides of triangles t and u along their common diagonal.
@@ -873,6 +926,9 @@ private:
   std::vector<std::unique_ptr<Probed_part> > probed_;   // by part: what probe() built of it
   bool prepared_ = false;   // whether prepare() made the cut into `prepared_parts_` parts
   std::size_t prepared_parts_ = 0;
+  bool may_abandon_ = false;   // see abandon_above()
+  std::size_t abandon_rate_ = 0, abandon_slack_ = 0;
+  std::atomic<bool> abandoned_{false};
 };
 
 /// The number of parts of a one-shot of `triangles` triangles: parts of
