@@ -705,38 +705,46 @@ one_shot_medial_axis(const std::vector<std::vector<typename Traits::Kernel::Poin
   const std::size_t T = triangles.size();
   const auto how = one_shot_parts<Traits>(parts, T);
   Divide_and_conquer<Traits> driver(engine, std::move(triangles));
-  if(parts == 0 && how.first >= probe_seeds) {
+  // the axis by boundary evolution of `given`, with the way out, unless
+  // its events exceed `budget` (what the divide and conquer would cost on
+  // these threads): then null
+  const double threads = double(arena_threads());
+  auto by_boundary_evolution = [&](const std::vector<std::vector<typename Kernel::Point_2> >& given,
+                                   double budget) -> std::shared_ptr<const Data> {
+    auto evolved = std::make_shared<Data>();
+    if(!one_shot_by_boundary_evolution(given, traits, budget, *evolved, stats))
+      return nullptr;
+    if(one_shot_takes_way_out(stats.anomalies)) {
+      evolved = std::make_shared<Data>();
+      one_shot_by_region_growing(given, traits, *evolved, stats);
+    }
+    stats.merge_seconds = seconds_since(t0);
+    if(statistics)
+      *statistics = stats;
+    return evolved;
+  };
+  // (the one-shot probes its parts, and may stop them: see below)
+  const bool probes = parts == 0 && how.first >= probe_seeds;
+  if(probes) {
     // (the probe's decisions are counted in the filter statistics, its
     // merges in the divide and conquer's where that is kept)
     const std::size_t limit = (std::min)(max_probe_triangles_per_part,
                                          (std::max)(min_probe_triangles_per_part, T / (16 * probe_seeds)));
     const double events = driver.probe(how.first, probe_seeds, limit);
-    const double threads = double(arena_threads());
     if(events >= (std::max)(boundary_evolution_events_per_merge, boundary_evolution_events_per_thread * threads)) {
       // boundary evolution, unless it does more work than the divide and
-      // conquer would on these threads (at the probe's rate): then the
-      // divide and conquer
+      // conquer would at the probe's rate: then the divide and conquer
       release_free_memory(data->points.size());
-      auto evolved = std::make_shared<Data>();
-      if(one_shot_by_boundary_evolution(input(), traits, events * double(T) / threads, *evolved, stats)) {
-        if(one_shot_takes_way_out(stats.anomalies)) {
-          evolved = std::make_shared<Data>();
-          one_shot_by_region_growing(input(), traits, *evolved, stats);
-        }
-        stats.merge_seconds = seconds_since(t0);
-        if(statistics)
-          *statistics = stats;
-        return Medial_axis_access::make<Kernel>(std::shared_ptr<const Data>(evolved));
-      }
+      if(auto evolved = by_boundary_evolution(input(), events * double(T) / threads))
+        return Medial_axis_access::make<Kernel>(evolved);
     }
   }
   if(parts != 0 && probe_limit != 0)   // (the divide and conquer goes on from the triangles probed)
     driver.probe(how.first, probe_seeds, probe_limit);
-  // where the probe ran and missed parts whose merges cross thousands of
-  // cells a triangle: boundary evolution (see abandon_events_per_triangle)
-  const bool may_abandon = parts == 0 && how.first >= probe_seeds;
+  // where the probe missed parts whose merges cross thousands of cells a
+  // triangle: boundary evolution (see abandon_events_per_triangle)
   const int forced = one_shot_abandon_forced().load(std::memory_order_relaxed);
-  if(may_abandon)
+  if(probes)
     driver.abandon_above(forced != 0 ? 0 : abandon_events_per_triangle, forced != 0 ? 0 : abandon_slack_triangles);
   data->hds.reserve_for_points(data->points.size());
   const Divide_and_conquer_counts counts = divide_and_conquer(driver, how.first, how.second);
@@ -744,23 +752,12 @@ one_shot_medial_axis(const std::vector<std::vector<typename Traits::Kernel::Poin
     const std::vector<std::vector<typename Kernel::Point_2> >& given = input();   // (rebuilt from `data` if given up)
     data.reset();
     release_free_memory(stats.input_vertices);
-    const double threads = double(arena_threads());
-    auto evolved = std::make_shared<Data>();
-    const double budget = forced == 2 ? 0 : double(abandon_events_per_triangle) * double(T) / threads;
-    if(one_shot_by_boundary_evolution(given, traits, budget, *evolved, stats)) {
-      if(one_shot_takes_way_out(stats.anomalies)) {
-        evolved = std::make_shared<Data>();
-        one_shot_by_region_growing(given, traits, *evolved, stats);
-      }
-      stats.abandoned_divide_and_conquers = 1;
-      stats.merge_seconds = seconds_since(t0);
-      if(statistics)
-        *statistics = stats;
-      return Medial_axis_access::make<Kernel>(std::shared_ptr<const Data>(evolved));
-    }
+    stats.abandoned_divide_and_conquers = 1;
+    if(auto evolved =
+         by_boundary_evolution(given, forced == 2 ? 0 : double(abandon_events_per_triangle) * double(T) / threads))
+      return Medial_axis_access::make<Kernel>(evolved);
     // boundary evolution did no better (the budget of the divide and
     // conquer at that rate): the one-shot again, without stopping
-    evolved.reset();
     Medial_axis_2<Kernel> axis = one_shot_medial_axis(given, nullptr, traits, check, statistics, how.first, 0);
     if(statistics)
       statistics->abandoned_divide_and_conquers = 1;
