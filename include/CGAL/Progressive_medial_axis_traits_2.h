@@ -51,13 +51,6 @@ namespace CGAL {
 namespace Progressive_medial_axes {
 namespace internal {
 
-// The plain double-double disk of `Filtered_model::disk()` is rounded with
-// the error bound of the same operations in double intervals
-// (rounds_within()): the chains of segments go through the same
-// construction in both (circle_sss()).
-template <>
-struct Sss_from_corner_bisectors<Double_double> : std::true_type {};
-
 /// Whether two points are at one place.  With double coordinates they are
 /// compared directly: the kernel's `==` (Epick's static filter) costs
 /// several times more, and the relations of every event time's triple ask

@@ -701,7 +701,13 @@ private:
   // milliseconds at most, and the cut of small polygons stays the one that
   // the probe's choice of a driver was measured on (a glyph of 646
   // triangles otherwise took the divide and conquer where boundary
-  // evolution is cheaper).
+  // evolution is cheaper).  The tail is at most half of the parts' worth:
+  // with fewer than 2 * tail_parts parts (the four parts a thread of
+  // default_parts() on two threads) it was every part, and on a 20,000-gon,
+  // whose joins cross the cells near its centre, the 8 parts of two threads
+  // became 53 parts of about 312 triangles, and the one-shot took 0.50 s;
+  // with the tail at most half of the triangles (7 parts there) 0.35 s, and
+  // without a tail 0.36 s (RESULTS.md, fifty-ninth session).
   static constexpr std::size_t tail_parts = 8;
   static constexpr int tail_divisor = 8;
   void cut(std::size_t parts, const std::vector<int>& order)
@@ -711,8 +717,8 @@ private:
     const int tail_target = target / tail_divisor;
     const int min_tail_target = (std::max)(1, divide_and_conquer_min_tail_target().load(std::memory_order_relaxed));
     const bool taper = parts > 1 && arena_threads() > 1 && tail_target >= min_tail_target;
-    const std::size_t tail_from =
-      taper ? order.size() - (std::min)(order.size(), tail_parts * std::size_t(target)) : order.size();
+    const std::size_t tail = (std::min)(tail_parts, parts / 2) * std::size_t(target);
+    const std::size_t tail_from = taper ? order.size() - (std::min)(order.size(), tail) : order.size();
     std::vector<int> size(std::size_t(T), 1);
     std::vector<char> is_root(std::size_t(T), 0);
     for(std::size_t i = order.size(); i-- > 0;) {

@@ -628,14 +628,16 @@ int circle_pss(const Site_nt<NT>& p, const Site_nt<NT>& s1, const Site_nt<NT>& s
 /// three segments from the bisectors of its corners (see there): double
 /// intervals, and the plain double-double whose disks the filtered traits
 /// round with the error bound of the same operations in double intervals
-/// (`rounds_within()` needs the same operations in both; its
-/// specialisation is in Progressive_medial_axis_traits_2.h).  Not the
+/// (`rounds_within()` needs the same operations in both).  Not the
 /// double-double intervals (no gain on a 20,000-gon) nor the exact stages,
 /// which keep their expressions.
 template <class NT>
 struct Sss_from_corner_bisectors : std::false_type {};
 template <>
 struct Sss_from_corner_bisectors<Interval_nt<false> > : std::true_type {};
+class Double_double;
+template <>
+struct Sss_from_corner_bisectors<Double_double> : std::true_type {};
 
 /// SSS: the circle tangent to three segments on their interior sides, in
 /// counter-clockwise order.  `chain` is -1, or the index i of the first
@@ -648,10 +650,7 @@ int circle_sss(const Site_nt<NT>& s1, const Site_nt<NT>& s2, const Site_nt<NT>& 
   // local frame at the source of s1
   const NT ox = s1.ax, oy = s1.ay;
   Line_nt<NT> l[3] = {oriented_line(s1), oriented_line(s2), oriented_line(s3)};
-  NT k[3];
   const Site_nt<NT>* s[3] = {&s1, &s2, &s3};
-  for(int i = 0; i < 3; ++i)
-    k[i] = l[i].nx * (s[i]->ax - ox) + l[i].ny * (s[i]->ay - oy);
   NT g2x = l[1].nx - l[0].nx, g2y = l[1].ny - l[0].ny;
   NT g3x = l[2].nx - l[0].nx, g3y = l[2].ny - l[0].ny;
   NT det = cross2(g2x, g2y, g3x, g3y);
@@ -691,6 +690,9 @@ int circle_sss(const Site_nt<NT>& s1, const Site_nt<NT>& s2, const Site_nt<NT>& 
       return 1;
     }
   }
+  NT k[3];
+  for(int i = 0; i < 3; ++i)
+    k[i] = l[i].nx * (s[i]->ax - ox) + l[i].ny * (s[i]->ay - oy);
   NT b2 = k[1] - k[0], b3 = k[2] - k[0];
   NT x = (b2 * g3y - b3 * g2y) / det;
   NT y = (g2x * b3 - b2 * g3x) / det;

@@ -204,6 +204,7 @@ public:
     const Orientation turn_P = slit_P ? RIGHT_TURN : orientation(points_[a], points_[P_], points_[b]);
     const Orientation turn_Q = c == e ? RIGHT_TURN : orientation(points_[c], points_[Q_], points_[e]);
 
+    reserve_lists();
     nodes_.clear();
     events_.clear();
     heap_.clear();
@@ -212,7 +213,7 @@ public:
     start_ = traits_.compute_start_time_2_object()(line_);
     end_ = traits_.compute_end_time_2_object()(line_);
     times_.clear();
-    times_.push_back(start_);
+    times_.push_back(START_TIME);
     nodes_.push_back(Node{Cp_, NO_INDEX, 1, NO_INDEX, NO_INDEX, 0});
     nodes_.push_back(Node{Cm_, 0, NO_INDEX, NO_INDEX, NO_INDEX, 0});
 
@@ -361,7 +362,7 @@ private:
   {
     const int h = nodes_[n].right_he;
     hds_.he(h).vertex = v;
-    if(compare_(t, times_[std::size_t(nodes_[n].opened)]) != EQUAL)
+    if(compare_(t, time_at(times_[std::size_t(nodes_[n].opened)])) != EQUAL)
       return;
     if(compare_(t, start_) == LARGER && compare_(t, end_) == SMALLER)
       hds_.set_zero_length(h, true);
@@ -790,9 +791,10 @@ private:
     }
   }
 
-  void advance_time(const Time& t)
+  // (t: where the time is kept, see time_at())
+  void advance_time(int t)
   {
-    if(compare_(t, now()) == LARGER)
+    if(compare_(time_at(t), now()) == LARGER)
       times_.push_back(t);
   }
 
@@ -829,17 +831,17 @@ private:
                           << approx(which == 0 ? sw_plus_[ip].time : which == 1 ? sw_minus_[im].time : events_[ev].time)
                           << " L=" << list_string());
       if(which == 0) {
-        advance_time(sw_plus_[ip].time);
+        advance_time(time_ref(SWITCH_PLUS_TIME, ip));
         switch_plus(sw_plus_[ip++]);
         visitor.on_switch();
       } else if(which == 1) {
-        advance_time(sw_minus_[im].time);
+        advance_time(time_ref(SWITCH_MINUS_TIME, im));
         switch_minus(sw_minus_[im++]);
         visitor.on_switch();
       } else {
         const int n = events_[ev].node;
         pop_event();                    // (marks the event, keeps its record)
-        advance_time(events_[ev].time);
+        advance_time(time_ref(EVENT_TIME, std::size_t(ev)));
         vanish(n, ev);
         visitor.on_vanish();
       }
@@ -1017,11 +1019,54 @@ private:
   int Cp_ = NO_INDEX, Cm_ = NO_INDEX, vP_ = NO_INDEX, vQ_ = NO_INDEX, P_ = NO_INDEX, Q_ = NO_INDEX;
   Site_2 line_, site_p_, site_m_;
   Time start_, end_;
-  // the sweep's times so far, the last one now (the nodes refer to them by
-  // index: a time of the filtered traits is about 200 bytes)
-  std::vector<Time> times_;
-  const Time& now() const { return times_.back(); }
+  // The sweep's times so far, the last one now; the nodes refer to them by
+  // index.  Each is kept where the sweep found it, in the switch lists or
+  // the events, which a merge only appends to (the candidates it drops at
+  // once aside), and referred to here: (index << 2) | list.  A time of the
+  // filtered traits is 208 bytes; copied here, the copies and the pages
+  // they took (times_ grown by doubling) were 8% of the tool's time on a
+  // 20,000-gon, whose joins have tens of thousands of events (RESULTS.md,
+  // fifty-ninth session).
+  enum { START_TIME, SWITCH_PLUS_TIME, SWITCH_MINUS_TIME, EVENT_TIME };
+  std::vector<int> times_;
+  static int time_ref(int list, std::size_t index) { return int(index << 2) | list; }
+  const Time& time_at(int t) const
+  {
+    const std::size_t i = std::size_t(t >> 2);
+    switch(t & 3) {
+    case START_TIME: return start_;
+    case SWITCH_PLUS_TIME: return sw_plus_[i].time;
+    case SWITCH_MINUS_TIME: return sw_minus_[i].time;
+    default: return events_[i].time;
+    }
+  }
+  const Time& now() const { return time_at(times_.back()); }
   int now_index() const { return int(times_.size()) - 1; }
+
+  // Reserves the merge's lists for the cells of C+ and C- (plus_, minus_),
+  // so that they do not grow by doubling in a long merge: each doubling
+  // copies the records (an event is 288 bytes with the filtered traits) and
+  // takes fresh pages, and a page fault costs about 10 microseconds on the
+  // 2-core VM of RESULTS.md.  A merge makes a switch at each vertex of C+
+  // and C-, which inserts a node into L and makes one candidate; a
+  // vanishing removes a node and makes two.  The lists keep their capacity
+  // from merge to merge.
+  template <class V>
+  static void reserve_at_least(V& v, std::size_t n)
+  {
+    if(n > v.capacity())
+      v.reserve((std::max)(n, 2 * v.capacity()));
+  }
+  void reserve_lists()
+  {
+    const std::size_t cells = plus_.size() + minus_.size();
+    reserve_at_least(sw_plus_, plus_.size());
+    reserve_at_least(sw_minus_, minus_.size());
+    reserve_at_least(nodes_, cells + 4);
+    reserve_at_least(events_, 3 * cells + 8);
+    reserve_at_least(heap_, 3 * cells + 8);
+    reserve_at_least(times_, 2 * cells + 8);
+  }
   bool strict_ = false;
 
   std::vector<int> plus_, minus_;
