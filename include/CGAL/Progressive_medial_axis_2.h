@@ -780,6 +780,10 @@ one_shot_medial_axis(const std::vector<std::vector<typename Traits::Kernel::Poin
   }
   if(statistics)
     *statistics = stats;
+  // (a small polygon's arrays cost a copy of a few KB here; a large one's
+  // would double the peak for a while, and their empty room is not backed)
+  if(data->points.size() <= 1024)
+    data->hds.shrink_to_fit();
   return Medial_axis_access::make<Kernel>(std::shared_ptr<const Data>(data));
 }
 
