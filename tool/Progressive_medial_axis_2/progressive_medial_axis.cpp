@@ -810,6 +810,16 @@ int run(const Options& o)
     if(report(repair_errors, "after repair: ")) return 2;
     std::vector<Polygon> out;
     std::vector<double> seconds;   // of the checks of the valid input polygons
+    // (reserved: the copies of a doubling vector were 29 MB of the peak of
+    // a file of 72,000 islands; RESULTS.md, sixtieth session)
+    std::size_t outputs = 0;
+    for(const auto& p : parts) outputs += p.size();
+    out.reserve(outputs);
+    seconds.reserve(outputs);
+    if(repair_in_tasks) {
+      repaired_axes.reserve(outputs);
+      repaired_stats.reserve(outputs);
+    }
     for(std::size_t k = 0; k < input.size(); ++k) {
       if(!errors[k].empty()) repairs.count(errors[k]);
       repairs.seconds += repair_seconds[k];
@@ -1056,6 +1066,7 @@ int run(const Options& o)
   // there are several
   typedef typename Medial_axis::Vertex_handle Vertex;
   std::vector<pma_tool::Axis_layer<Medial_axis> > layers;
+  layers.reserve(jobs.size());
   for(std::size_t k = 0; k < jobs.size(); ++k) {
     const Job& job = jobs[k];
     pma_tool::Axis_layer<Medial_axis> layer;
