@@ -810,8 +810,9 @@ int run(const Options& o)
     if(report(repair_errors, "after repair: ")) return 2;
     std::vector<Polygon> out;
     std::vector<double> seconds;   // of the checks of the valid input polygons
-    // (reserved: the copies of a doubling vector were 29 MB of the peak of
-    // a file of 72,000 islands; RESULTS.md, sixtieth session)
+    // (reserved: grown by doubling, these vectors and the layers of the
+    // outputs were about 27 MB more of the peak of a file of 72,000
+    // islands; RESULTS.md, sixtieth session)
     std::size_t outputs = 0;
     for(const auto& p : parts) outputs += p.size();
     out.reserve(outputs);
