@@ -627,7 +627,9 @@ one_shot_medial_axis(const std::vector<std::vector<typename Traits::Kernel::Poin
 #endif
   // the split's phase 1 (the chord, then both sides' points), or nothing
   auto split_points = [&] {
-    if(split && split->find_chord(rings))
+    // (beside the check, the side of the thread that checks the polygon is
+    // the smaller one: see split_triangulation_caller_share)
+    if(split && split->find_chord(rings, overlap ? split_triangulation_caller_share : 0.5))
       split->insert_points(rings);
     else
       split.reset();

@@ -41,8 +41,14 @@
 // pairs are rejected early, so that costs 0.4 to 7 ms on outlines of
 // 20,000 to 110,000 vertices, while another thread checks the polygon.
 // The sides' times follow their sizes (a 60:40 cut of a Chinese outline
-// took 105 and 63 ms to insert), so the search goes on to the most even
-// chord of the 256 pairs, or one within m/32 of even.
+// took 105 and 63 ms to insert), so the search goes on to the chord of the
+// 256 pairs nearest the share asked for, or one within m/32 of it.  The
+// calling thread triangulates side 1, another thread side 0.  Where the
+// check of the polygon runs beside (the one-shot), the thread that checks
+// it takes side 0 only then, so side 1 gets split_triangulation_caller_share
+// of the outer ring; an even cut left the calling thread waiting 16 to 29
+// ms for the other on country outlines of 50,000 to 128,000 vertices
+// (RESULTS.md, sixty-first session).
 // A hole goes to the side that holds its first vertex: a ray from it
 // crosses that side's boundary an odd number of times (the holes sorted
 // by height, each edge of the side looks at those at its heights).
@@ -63,7 +69,7 @@
 #include <CGAL/Progressive_medial_axis_2/internal/Triangulate.h>
 
 #if defined(CGAL_LINKED_WITH_TBB) && !defined(CGAL_PMA2_NO_TBB)
-#include <tbb/parallel_invoke.h>
+#include <tbb/task_group.h>
 #endif
 
 #include <algorithm>
@@ -91,6 +97,16 @@ inline std::atomic<std::size_t>& split_triangulation_min_vertices()
 /// The pairs of vertices tried as a chord.
 constexpr int split_triangulation_tries = 256;
 
+/// The share of the outer ring that goes to the side the calling thread
+/// triangulates (side 1) where the other thread first checks the polygon.
+/// The check took 0.28 to 0.45 of the time of the two sides' Delaunay
+/// triangulations on five country outlines, and the chord's search 0.03:
+/// by those times the two threads end together at shares of 0.59 to 0.66
+/// (0.72 on one outline whose side 0 held more holes); the side that
+/// the calling thread builds also takes a little more time a vertex
+/// (RESULTS.md, sixty-first session).
+constexpr double split_triangulation_caller_share = 0.6;
+
 template <class Kernel>
 class Split_triangulation
 {
@@ -100,15 +116,16 @@ class Split_triangulation
   typedef std::chrono::steady_clock Clock;
 
 public:
-  /// Looks for a chord of the outer ring of `rings` and places the holes;
-  /// false if none was found.  Needs finite coordinates only: it runs
-  /// while the polygon is being checked, and its result is used once the
-  /// polygon is valid.
+  /// Looks for a chord of the outer ring of `rings` that leaves about
+  /// `caller_share` of its vertices to side 1, and places the holes; false
+  /// if none was found.  Needs finite coordinates only: it runs while the
+  /// polygon is being checked, and its result is used once the polygon is
+  /// valid.
   template <class Point_2>
-  bool find_chord(const std::vector<std::vector<Point_2> >& rings);
+  bool find_chord(const std::vector<std::vector<Point_2> >& rings, double caller_share = 0.5);
 
   /// Phase 1: the Delaunay triangulation of each side's points, the two at
-  /// the same time (after find_chord()).
+  /// the same time (after find_chord()), side 1 on the calling thread.
   template <class Point_2>
   void insert_points(const std::vector<std::vector<Point_2> >& rings);
 
@@ -129,6 +146,8 @@ private:
   template <class Point_2>
   static void make_delaunay(const std::vector<Point_2>& points, std::vector<Triangle>& tris, int t, int e);
 
+  // f and g at the same time: g on the calling thread, f on another one
+  // if one is free (else on this one, after g)
   template <class F, class G>
   void run_both(const F& f, const G& g)
   {
@@ -140,7 +159,10 @@ private:
       seconds[s] = std::chrono::duration<double>(Clock::now() - t).count();
     };
 #if defined(CGAL_LINKED_WITH_TBB) && !defined(CGAL_PMA2_NO_TBB)
-    tbb::parallel_invoke([&] { timed(f, 0); }, [&] { timed(g, 1); });
+    tbb::task_group group;
+    group.run([&] { timed(f, 0); });
+    timed(g, 1);
+    group.wait();
 #else
     timed(f, 0);
     timed(g, 1);
@@ -168,7 +190,7 @@ private:
 
 template <class Kernel>
 template <class Point_2>
-bool Split_triangulation<Kernel>::find_chord(const std::vector<std::vector<Point_2> >& rings)
+bool Split_triangulation<Kernel>::find_chord(const std::vector<std::vector<Point_2> >& rings, double caller_share)
 {
   const K k;
   const auto orientation = k.orientation_2_object();
@@ -220,15 +242,20 @@ bool Split_triangulation<Kernel>::find_chord(const std::vector<std::vector<Point
     return true;
   };
 
-  // (the most even of the chords found, or the first within m/32 of even)
+  // (the chord found nearest the share asked for, or the first within m/32
+  // of it: a chord (i, j) leaves the (j - i) mod m edges of the outer ring
+  // after i to side 0 if the ring is counter-clockwise, to side 1 if not)
+  CGAL_precondition(caller_share >= 0.375 && caller_share <= 0.625);
+  const std::size_t to_side_1 = std::size_t(double(m_) * caller_share);
+  const std::size_t target = ccw_ ? m_ - to_side_1 : to_side_1;
   std::minstd_rand random(std::uint_fast32_t(m_ * 2654435761u + ring_start_.back()));
-  std::size_t best = m_;   // how far the best chord's sides are from m/2 vertices each
+  std::size_t best = m_;   // how far the best chord's (j - i) mod m is from the target
   for(int t = 0; t < split_triangulation_tries && best > m_ / 32 && budget > 0; ++t) {
     const std::size_t i = std::size_t(random()) % m_;
     const std::size_t spread = m_ / 10;
-    const std::size_t j = (i + m_ / 2 - spread + std::size_t(random()) % (2 * spread + 1)) % m_;
+    const std::size_t j = (i + target - spread + std::size_t(random()) % (2 * spread + 1)) % m_;
     const std::size_t length = (j + m_ - i) % m_;
-    const std::size_t uneven = length > m_ / 2 ? length - m_ / 2 : m_ / 2 - length;
+    const std::size_t uneven = length > target ? length - target : target - length;
     if(uneven >= best) continue;
     const Point p = at(0, i), q = at(0, j);
     if(inside_angle(i, q) && inside_angle(j, p) && clear(i, j, p, q)) {
