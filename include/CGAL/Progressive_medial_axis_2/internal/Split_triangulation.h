@@ -47,7 +47,7 @@
 // check of the polygon runs beside (the one-shot), the thread that checks
 // it takes side 0 only then, so side 1 gets split_triangulation_caller_share
 // of the outer ring; an even cut left the calling thread waiting 16 to 29
-// ms for the other on country outlines of 50,000 to 128,000 vertices
+// ms for the other on country outlines of 80,000 to 128,000 vertices
 // (RESULTS.md, sixty-first session).
 // A hole goes to the side that holds its first vertex: a ray from it
 // crosses that side's boundary an odd number of times (the holes sorted
