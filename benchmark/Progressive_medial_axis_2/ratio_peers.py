@@ -15,8 +15,9 @@ ratios, and each round's ratio.
 
 --scaling: ROUNDS rounds of the tool with --threads 1 then --threads 2
 (alternating the order), then one-thread runs pinned to each CPU (taskset):
-on the 2-core VM of RESULTS.md one CPU was at times a fifth slower than the
-other, which shows in a one-thread time as much as in a two-thread one.
+on the 2-core VM of RESULTS.md one CPU was at times a third slower than the
+other, which moves the one-thread time, and so the scaling, by the CPU that
+run lands on.
 """
 import argparse
 import os
