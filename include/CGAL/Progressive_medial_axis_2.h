@@ -597,7 +597,7 @@ one_shot_medial_axis(const std::vector<std::vector<typename Traits::Kernel::Poin
   // (on the heap, freed as soon as the triangles are read)
   auto triangulation = std::make_unique<Ring_triangulation<Kernel> >();
   // a large polygon on two threads or more: triangulated in two sides at
-  // once where a chord cuts it (Split_triangulation.h)
+  // once where a chord, or a path through holes, cuts it (Split_triangulation.h)
   std::unique_ptr<Split_triangulation<Kernel> > split;
   auto t0 = std::chrono::steady_clock::now();
   bool overlap = false;
@@ -629,7 +629,7 @@ one_shot_medial_axis(const std::vector<std::vector<typename Traits::Kernel::Poin
   auto split_points = [&] {
     // (beside the check, the side of the thread that checks the polygon is
     // the smaller one: see split_triangulation_caller_share)
-    if(split && split->find_chord(rings, overlap ? split_triangulation_caller_share : 0.5))
+    if(split && split->find_cut(rings, overlap ? split_triangulation_caller_share : 0.5))
       split->insert_points(rings);
     else
       split.reset();
@@ -691,6 +691,7 @@ one_shot_medial_axis(const std::vector<std::vector<typename Traits::Kernel::Poin
   std::vector<Triangle> triangles;
   if(split && split->finish(*data, triangles)) {
     stats.split_triangulations = 1;
+    stats.split_triangulation_holes = split->holes_on_cut();
     stats.triangulation_parallel_seconds = split->parallel_seconds();
   } else {   // (where the sides could not be finished, the whole polygon from its points)
     triangles = triangulation->finish(*data);

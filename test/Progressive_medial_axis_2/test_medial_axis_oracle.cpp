@@ -101,6 +101,9 @@ CGAL::Progressive_medial_axis_driver g_driver = CGAL::REGION_GROWING;
 // one-shots whose triangulation was split along a chord (main() lowers the
 // size from which it is, so that the random polygons take that path)
 std::size_t g_split_one_shots = 0;
+// ... of them, those split along a path through holes (every other one-shot
+// looks for such a path before a chord)
+std::size_t g_path_split_one_shots = 0;
 // One-shots whose last parts were cut smaller (main() lowers the size from
 // which this is done, for the test polygons, which are small).
 std::size_t g_tapered_one_shots = 0;
@@ -394,6 +397,7 @@ bool run_polygon(Checker<Traits>& checker, const Rings& rings, const std::string
     const std::size_t probe_limit = count % 3 == 2 ? 1 + (count * 7) % 60 : 0;
     ++count;
     CGAL::Progressive_medial_axis_statistics stats;
+    CGAL::Progressive_medial_axes::internal::split_triangulation_paths_first() = count % 2 == 0;
     auto one_shot = [&] {
       return CGAL::Progressive_medial_axes::internal::one_shot_medial_axis(
         CGAL::Progressive_medial_axes::internal::rings_of<typename Traits::Kernel>(rings), Traits(), CGAL::CHECK_INPUT,
@@ -408,6 +412,8 @@ bool run_polygon(Checker<Traits>& checker, const Rings& rings, const std::string
     CHECK(stats.undecided_ties == 0, what << ": " << stats.undecided_ties << " undecided ties in the one-shot");
     CHECK(stats.region_growing_one_shots == 0, what << ": the one-shot met an anomaly and was computed again by region growing");
     g_split_one_shots += stats.split_triangulations;
+    g_path_split_one_shots += stats.split_triangulation_holes > 0 ? 1 : 0;
+    CGAL::Progressive_medial_axes::internal::split_triangulation_paths_first() = false;
     // (the last parts cut smaller: several times the parts asked for)
     if(stats.parts > parts + 1) ++g_tapered_one_shots;
     // never where a vertex lies inside an edge: its point and its edge could
@@ -1533,11 +1539,15 @@ int run_all(const Options& o)
   if(wanted("union")) union_tests(checker, o);
   // the split triangulation runs where a one-shot has two threads or more,
   // on double coordinates; the random polygons have chords
-  std::cout << g_split_one_shots << " one-shots triangulated in two sides\n";
+  std::cout << g_split_one_shots << " one-shots triangulated in two sides (" << g_path_split_one_shots
+            << " along a path through holes)\n";
 #ifdef CGAL_PMA2_USE_TBB
   if(std::is_floating_point<typename Traits::FT>::value && tbb::this_task_arena::max_concurrency() > 1 &&
      g_driver == CGAL::REGION_GROWING && (wanted("random") || wanted("holes")))
     CHECK(g_split_one_shots > 0, "no one-shot triangulated its polygon in two sides");
+  if(std::is_floating_point<typename Traits::FT>::value && tbb::this_task_arena::max_concurrency() > 1 &&
+     g_driver == CGAL::REGION_GROWING && wanted("holes"))
+    CHECK(g_path_split_one_shots > 0, "no one-shot triangulated its polygon in two sides along a path through holes");
 #endif
   std::cout << g_tapered_one_shots << " one-shots with their last parts cut smaller\n";
 #ifdef CGAL_PMA2_USE_TBB

@@ -767,6 +767,44 @@ void huge_pages(const std::string& data, bool sanitized)
 
 } // namespace
 
+// A plate: a square with 75 x 75 small hexagonal holes (33,754 vertices,
+// over the 32,768 from which a one-shot on two threads splits its
+// triangulation).  Its outer ring has no chord, so the triangulation is
+// split along a path through holes; the axis is the oracle's, and the same
+// on one thread, which does not split.
+void split_along_holes()
+{
+  const std::string f = tmp + "/plate.wkt";
+  {
+    std::ofstream out(f);
+    out.precision(17);
+    const int k = 75;
+    out << "POLYGON ((0 0, " << k << " 0, " << k << " " << k << ", 0 " << k << ", 0 0)";
+    for(int i = 0; i < k; ++i)
+      for(int j = 0; j < k; ++j) {
+        // (moved and turned a little from cell to cell: no three points on a line)
+        const double cx = i + 0.5 + 0.1 * std::sin(1.3 * i + 0.7 * j), cy = j + 0.5 + 0.1 * std::cos(0.9 * i - 1.1 * j);
+        const double turn = 0.2 + 0.05 * std::sin(double(i * k + j));
+        out << ", (";
+        for(int v = 0; v <= 6; ++v) {   // clockwise
+          const double a = turn - (v % 6) * 3.14159265358979323846 / 3;
+          out << (v ? ", " : "") << cx + 0.3 * std::cos(a) << " " << cy + 0.3 * std::sin(a);
+        }
+        out << ")";
+      }
+    out << ")\n";
+  }
+  Result two = run(tool + " --threads 2 --stats " + f);
+  const std::string holes = stats_value(two.out, "triangulation_split_holes");
+  CHECK(two.status == 0 && stats_value(two.out, "triangulation_split") == "1" && !holes.empty() && std::stol(holes) > 0,
+        f << " on two threads: triangulation_split " << stats_value(two.out, "triangulation_split")
+          << ", triangulation_split_holes " << holes);
+  Result p1 = run(tool + " --threads 1 --pairs --branches " + f), p2 = run(tool + " --threads 2 --pairs --branches " + f);
+  CHECK(p1.status == 0 && p2.status == 0 && !p1.out.empty() && p1.out == p2.out,
+        f << ": the pairs and branch points on one and two threads differ");
+  pairs_against_oracle(f, {-1}, "--threads 2");
+}
+
 int main(int argc, char** argv)
 {
   // --sanitized: TOOL is built with a sanitizer
@@ -811,6 +849,7 @@ int main(int argc, char** argv)
     CHECK(p1.status == 0 && p2.status == 0 && !p1.out.empty() && p1.out == p2.out,
           f << ": the pairs on one and two threads differ");
   }
+  split_along_holes();
   // a one-shot's `steps` (counted without an axis) is the progressive run's
   for(const std::string f : {"/syn_cheese1k.wkt", "/touching/syn_pinch.wkt", "/touching/c1m_PNG_21.wkt"}) {
     Result one = run(tool + " --stats " + data + f), step = run(tool + " --stats --step 0 " + data + f);

@@ -451,6 +451,7 @@ void add_statistics(CGAL::Progressive_medial_axis_statistics& s, const CGAL::Pro
   s.triangulation_seconds += t.triangulation_seconds;
   s.overlapped_seconds += t.overlapped_seconds;
   s.split_triangulations += t.split_triangulations;
+  s.split_triangulation_holes += t.split_triangulation_holes;
   s.triangulation_parallel_seconds += t.triangulation_parallel_seconds;
   s.merge_seconds += t.merge_seconds;
   s.switches += t.switches;
@@ -1187,7 +1188,8 @@ int run(const Options& o)
       std::printf("oneshot_boundary_evolution %zu\n", s.boundary_evolution_one_shots);
       std::printf("oneshot_region_growing %zu\n", s.region_growing_one_shots);
       std::printf("oneshot_dc_abandoned %zu\n", s.abandoned_divide_and_conquers);
-      std::printf("triangulation_split %zu\n", s.split_triangulations);
+      std::printf("triangulation_split %zu\ntriangulation_split_holes %zu\n", s.split_triangulations,
+                  s.split_triangulation_holes);
     }
     if(!o.union_with.empty())
       std::printf("time_union_merge %.6f\ntime_union_join %.6f\nunion_shared_edges %zu\nunion_chains %zu\n"

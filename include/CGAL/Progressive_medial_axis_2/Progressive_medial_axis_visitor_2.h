@@ -51,7 +51,8 @@ struct Progressive_medial_axis_statistics {
   // dependent tasks) validation + triangulation - min(validation,
   // `overlapped_seconds`) + `parts_seconds_max` + `join_seconds`.
   double overlapped_seconds = 0;   ///< one shot: the part of the triangulation that ran while another thread validated the input (the points' Delaunay triangulation; 0 when sequential)
-  std::size_t split_triangulations = 0; ///< one shot: 1 where the polygon was triangulated in two sides at once, cut along a chord of its outer ring (large polygons checked by the one-shot, two threads or more), else 0
+  std::size_t split_triangulations = 0; ///< one shot: 1 where the polygon was triangulated in two sides at once, cut along a chord of its outer ring or a path through holes (large polygons checked by the one-shot, two threads or more), else 0
+  std::size_t split_triangulation_holes = 0; ///< one shot: where the triangulation was split along a path through holes, the holes it went through (0 for a chord, or no split)
   double triangulation_parallel_seconds = 0; ///< one shot: the time the two sides' triangulations ran beside each other (their summed times less the wall time; 0 unless split)
   std::size_t parts = 0;           ///< one shot: parts of the divide and conquer
   double parts_seconds_sum = 0;    ///< one shot: the tasks of all parts (built independently), summed
