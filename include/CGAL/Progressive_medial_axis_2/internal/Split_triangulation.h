@@ -297,12 +297,12 @@ bool Split_triangulation<Kernel>::find_cut(const std::vector<std::vector<Point_2
   const std::size_t to_side_1 = std::size_t(double(m_) * caller_share);
   const std::size_t target = ccw_ ? m_ - to_side_1 : to_side_1;
   const bool paths_first = split_triangulation_paths_first().load(std::memory_order_relaxed);
-  bool found = false;
+  bool found = false, path = false;
   for(int attempt = 0; attempt < 2 && !found; ++attempt) {
     if((attempt == 0) != paths_first)
       found = m_ >= 16 && find_chord(rings, target);
     else
-      found = rings.size() > 1 && find_path(rings, target);
+      found = path = rings.size() > 1 && find_path(rings, target);
   }
   if(!found)
     return false;
@@ -364,7 +364,7 @@ bool Split_triangulation<Kernel>::find_cut(const std::vector<std::vector<Point_2
     }
   // (a path through holes takes the outer ring's share, not the holes':
   // where the holes fall mostly on one side, the split would not pay)
-  if(!path_holes_.empty() && 4 * (std::min)(side_points[0], side_points[1]) < n)
+  if(path && 4 * (std::min)(side_points[0], side_points[1]) < n)
     return false;
   return true;
 }
@@ -607,8 +607,8 @@ bool Split_triangulation<Kernel>::find_path(const std::vector<std::vector<Point_
         const double s = den != 0 ? ((x(u) - x(p)) * ey - (y(u) - y(p)) * ex) / den : 0;
         crossings.push_back({s, r, e});
       }
-    if(blocked || crossings.empty())
-      continue;
+    if(blocked)
+      continue;   // (with no crossing at all, ab is a chord: a path of one segment)
     if(!(strictly_inside_angle(at(0, before(i)), p, at(0, after(i)), q) &&
          strictly_inside_angle(at(0, before(j)), q, at(0, after(j)), p)))
       continue;
