@@ -197,6 +197,11 @@ private:
   // The boundary of side s, with the interior on its left: global indices
   // of its points, in order (closed: the last one's successor is the first).
   std::vector<std::size_t> side_boundary(int s) const;
+  // the ring of the point of global index g
+  std::size_t ring_of(std::size_t g) const
+  {
+    return std::size_t(std::upper_bound(ring_start_.begin(), ring_start_.end(), g) - ring_start_.begin()) - 1;
+  }
 
   // whether the segments pq and uw cross or touch (or lie on one line,
   // overlapping); a bounding-box test first
@@ -262,6 +267,7 @@ private:
   std::vector<std::size_t> cut_;
   std::vector<std::size_t> path_holes_;   // the rings of those holes, in order from a
   std::vector<char> hole_forward_;        // per such hole: its next point has the interior on its left
+  std::vector<std::size_t> boundary_[2];  // side_boundary() of each side, once the cut is found
   // per ring: 0 side 0 (the outer ring from a to b, then the cut), 1
   // side 1 (from b to a), 2 on the cut (split between both)
   std::vector<char> side_of_ring_;
@@ -349,11 +355,13 @@ bool Split_triangulation<Kernel>::find_cut(const std::vector<std::vector<Point_2
   };
   std::size_t side_points[2] = {0, 0};
   {
-    const std::vector<std::size_t> boundary = side_boundary(0);   // (global indices, closed)
+    for(int s = 0; s < 2; ++s) {
+      boundary_[s] = side_boundary(s);   // (global indices, closed)
+      side_points[s] = boundary_[s].size();
+    }
+    const std::vector<std::size_t>& boundary = boundary_[0];
     for(std::size_t i = 0; i < boundary.size() && !on_boundary; ++i)
       if(!starts.empty()) count(all[boundary[i]], all[boundary[(i + 1) % boundary.size()]]);
-    side_points[0] = boundary.size();
-    side_points[1] = side_boundary(1).size();
   }
   if(on_boundary)
     return false;
@@ -401,8 +409,6 @@ template <class Kernel>
 template <class Point_2>
 bool Split_triangulation<Kernel>::find_chord(const std::vector<std::vector<Point_2> >& rings, std::size_t target)
 {
-  const K k;
-  const auto orientation = k.orientation_2_object();
   auto at = [&](std::size_t r, std::size_t i) -> Point { return TK::point(rings[r][i]); };
   // whether the direction from vertex i towards q is strictly inside the
   // polygon's angle at i
@@ -463,10 +469,6 @@ bool Split_triangulation<Kernel>::find_path(const std::vector<std::vector<Point_
   const auto orientation = k.orientation_2_object();
   const std::size_t n = ring_start_.back();
   auto at = [&](std::size_t r, std::size_t i) -> Point { return TK::point(rings[r][i]); };
-  // the ring of a point (its global index)
-  auto ring_of = [&](std::size_t g) {
-    return std::size_t(std::upper_bound(ring_start_.begin(), ring_start_.end(), g) - ring_start_.begin()) - 1;
-  };
   // the point after the point g in its ring's order
   auto index_next = [&](std::size_t g) {
     const std::size_t r = ring_of(g);
@@ -686,13 +688,13 @@ void Split_triangulation<Kernel>::insert_points(const std::vector<std::vector<Po
   std::vector<std::pair<Point, int> > points[2];
   for(int s = 0; s < 2; ++s) {
     // the side's boundary (the outer ring's part, and the path's), then its holes
-    const std::vector<std::size_t> boundary = side_boundary(s);
+    const std::vector<std::size_t>& boundary = boundary_[s];
     std::size_t holes_points = 0;
     for(std::size_t r = 1; r < rings.size(); ++r)
       if(side_of_ring_[r] == s) holes_points += rings[r].size();
     points[s].reserve(boundary.size() + holes_points);
     for(const std::size_t g : boundary) {
-      const std::size_t r = std::size_t(std::upper_bound(ring_start_.begin(), ring_start_.end(), g) - ring_start_.begin()) - 1;
+      const std::size_t r = ring_of(g);
       points[s].emplace_back(TK::point(rings[r][g - ring_start_[r]]), int(g));
     }
   }
@@ -727,7 +729,7 @@ bool Split_triangulation<Kernel>::finish(const Data& data, std::vector<Triangle>
   std::vector<int> next[2];
   for(int s = 0; s < 2; ++s) {
     next[s].assign(n, -1);
-    const std::vector<std::size_t> boundary = side_boundary(s);
+    const std::vector<std::size_t>& boundary = boundary_[s];
     for(std::size_t i = 0; i < boundary.size(); ++i)
       next[s][boundary[i]] = int(boundary[i + 1 == boundary.size() ? 0 : i + 1]);
   }
