@@ -308,36 +308,94 @@ std::string hugetlb_tunable()
 }
 
 // Whether glibc's malloc backs its heaps with transparent huge pages
-// (glibc.malloc.hugetlb=1, set by use_huge_pages() below or by the user,
+// (glibc.malloc.hugetlb=1, set by restart_if_worth_it() below or by the user,
 // where it can); `huge_pages` in --stats.
 bool heap_on_huge_pages() { return hugetlb_tunable() == "1" && huge_page_heap_possible(); }
 
 #if defined(__GLIBC__) && defined(__linux__)
 // An input file from this size on (about 20,000 vertices) is read by a
-// process whose heap has transparent huge pages.
+// process whose heap has transparent huge pages, and by the tool's build for
+// the CPU's instruction set: one exec for both.  An exec costs 3 to 5 ms on
+// the VM of RESULTS.md, a few per cent of a run of that size; the build
+// with fused multiply-add alone would not pay for it on small inputs
+// (RESULTS.md, sixty-fourth session).
 constexpr std::uintmax_t min_huge_pages_input_bytes = 512 << 10;
 #endif
 
-// Runs the tool again, in this process, with glibc's malloc backing its
-// heaps with transparent huge pages, when the input (INPUT and the file of
-// --union together) is large and
-// huge_page_heap_possible().  A large one-shot writes its structures once,
+// The instruction set this build of the tool was compiled for
+// (`instruction_set` in --stats): CMake builds the tool a second time with
+// fused multiply-add (below).
+const char* instruction_set()
+{
+#if defined(PMA_TOOL_INSTRUCTION_SET)
+  return PMA_TOOL_INSTRUCTION_SET;
+#elif defined(__x86_64__)
+  return "x86-64";
+#else
+  return "default";
+#endif
+}
+
+// The tool's build with fused multiply-add (FMA3 and AVX: x86-64 CPUs from
+// 2013 on), when this process should run it instead: the file beside this
+// executable with ".fma" after its name, built from the same sources with
+// -mfma -ffp-contract=off, where the CPU has FMA and AVX, for a large input
+// (`large`).  "" if none.  The double-double stage, which rounds every
+// branch point, computes the error of each product there in one fused
+// multiply-add instead of Dekker's ten operations: the one-shot on
+// c1m_CHN_0 took 5% to 7% less CPU time, and a build for all of x86-64-v3
+// (AVX2, BMI2) no less (RESULTS.md, sixty-fourth session).  Without
+// contraction (-ffp-contract=off) every double operation rounds as in the
+// baseline build, and the double-double products are exact in both, so
+// the axes are the same bit for bit.  The environment variable
+// PMA_TOOL_INSTRUCTION_SET chooses: x86-64 (this build) or x86-64+fma (that
+// build whatever the input's size, where the CPU has it).  Not under
+// LD_PRELOAD (valgrind, heaptrack: they follow this process, not
+// necessarily the one it execs) nor in secure mode.
+std::string build_for_this_cpu(bool large)
+{
+#if defined(__x86_64__) && defined(__linux__) && defined(__GNUC__) && !defined(PMA_TOOL_INSTRUCTION_SET)
+  const char* chosen = std::getenv("PMA_TOOL_INSTRUCTION_SET");
+  const std::string choice = chosen ? chosen : "";
+  if(!choice.empty() && choice != "x86-64" && choice != "x86-64+fma")
+    usage_error("PMA_TOOL_INSTRUCTION_SET must be x86-64 or x86-64+fma, not '" + choice + "'");
+  if(choice == "x86-64" || (choice.empty() && !large)) return "";
+  const char* preload = std::getenv("LD_PRELOAD");
+  if((preload && *preload) || getauxval(AT_SECURE)) return "";
+  __builtin_cpu_init();
+  if(!__builtin_cpu_supports("avx") || !__builtin_cpu_supports("fma")) return "";
+  std::error_code error;
+  const std::filesystem::path self = std::filesystem::read_symlink("/proc/self/exe", error);
+  if(error) return "";
+  const std::string build = self.string() + ".fma";
+  return access(build.c_str(), X_OK) == 0 ? build : "";
+#else
+  (void)large;
+  return "";
+#endif
+}
+
+// Runs the tool again, in this process, when that pays: with glibc's malloc
+// backing its heaps with transparent huge pages, when the input (INPUT and
+// the files of --union together) is large and huge_page_heap_possible();
+// and as the build for this CPU's instruction set (build_for_this_cpu()).
+// A large one-shot writes its structures once,
 // front to back: with 4 KB pages, one page fault per page took 10% to 30%
 // of the run on a 2-core VM, and 2 MB pages took 14% to 22% off the whole
 // process on real outlines and 27% on a plate of 100,000 holes, for 5% to
 // 35% more peak memory (RESULTS.md, "Huge pages for large inputs",
 // twenty-first session).  glibc reads GLIBC_TUNABLES only when a process
-// starts, and offers no call to set this one later, hence exec.  Nothing is
-// done when GLIBC_TUNABLES already names the setting (so
-// GLIBC_TUNABLES=glibc.malloc.hugetlb=0 turns this off), or when the tool was
-// started through the dynamic loader (/proc/self/exe is then the loader).
-// Should the exec fail, the run goes on here as it is.
-void use_huge_pages(const Options& o, char** argv)
+// starts, and offers no call to set this one later, hence exec.  Huge pages
+// are not asked for when GLIBC_TUNABLES already names the setting (so
+// GLIBC_TUNABLES=glibc.malloc.hugetlb=0 turns them off).  Nothing is done
+// when the tool was started through the dynamic loader (/proc/self/exe is
+// then the loader).  Should the exec fail, the run goes on here as it is.
+void restart_if_worth_it(const Options& o, char** argv)
 {
 #if defined(__GLIBC__) && defined(__linux__)
   const char* tunables = std::getenv("GLIBC_TUNABLES");
   const std::string before = tunables ? tunables : "";
-  if(before.find("glibc.malloc.hugetlb") != std::string::npos || getauxval(AT_BASE) == 0) return;
+  if(getauxval(AT_BASE) == 0) return;
   // (the input and, with --union, the other polygon's file)
   std::uintmax_t size = 0;
   std::vector<std::string> files = o.union_with;
@@ -347,11 +405,16 @@ void use_huge_pages(const Options& o, char** argv)
     size += std::filesystem::file_size(file, error);
     if(error) return;
   }
-  if(size < min_huge_pages_input_bytes || !huge_page_heap_possible()) return;
-  const std::string value = (before.empty() ? "" : before + ":") + "glibc.malloc.hugetlb=1";
-  if(setenv("GLIBC_TUNABLES", value.c_str(), 1) != 0) return;
+  const bool large = size >= min_huge_pages_input_bytes;
+  const bool huge = large && before.find("glibc.malloc.hugetlb") == std::string::npos && huge_page_heap_possible();
+  const std::string build = build_for_this_cpu(large);
+  if(!huge && build.empty()) return;
+  if(huge) {
+    const std::string value = (before.empty() ? "" : before + ":") + "glibc.malloc.hugetlb=1";
+    if(setenv("GLIBC_TUNABLES", value.c_str(), 1) != 0) return;
+  }
   std::fflush(nullptr);
-  execv("/proc/self/exe", argv);
+  execv(build.empty() ? "/proc/self/exe" : build.c_str(), argv);
   if(tunables)
     setenv("GLIBC_TUNABLES", before.c_str(), 1);
   else
@@ -1160,6 +1223,7 @@ int run(const Options& o)
     std::printf("polygons %zu\nskipped_geometries %zu\n", jobs.size(), skipped.count);
     std::printf("traits %s\n", o.traits.c_str());
     std::printf("huge_pages %d\n", heap_on_huge_pages() ? 1 : 0);
+    std::printf("instruction_set %s\n", instruction_set());
     std::printf("time_read %.6f\ntime_validate %.6f\ntime_triangulate %.6f\ntime_merge %.6f\n",
                 read_seconds, s.validation_seconds, s.triangulation_seconds, s.merge_seconds);
     std::printf("switch_events %zu\nvanishing_events %zu\nanomalies %zu\nmax_n_v %zu\n",
@@ -1221,7 +1285,7 @@ int run(const Options& o)
 int main(int argc, char** argv)
 {
   Options o = parse(argc, argv);
-  use_huge_pages(o, argv);
+  restart_if_worth_it(o, argv);
 #ifdef __GLIBC__
   // glibc grows and shrinks each thread's heap in small steps, and with two
   // threads every shrink (and every growth of a thread's heap) makes the
