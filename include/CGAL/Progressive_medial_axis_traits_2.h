@@ -17,6 +17,7 @@
 #include <CGAL/Progressive_medial_axis_2/internal/Medial_constructions.h>
 #include <CGAL/Progressive_medial_axis_2/internal/Mpfr_interval.h>
 #include <CGAL/Progressive_medial_axis_2/internal/Double_double.h>
+#include <CGAL/Progressive_medial_axis_2/internal/Axis_aligned_disk.h>
 #include <CGAL/Progressive_medial_axis_2/internal/One_root_rational.h>
 #include <CGAL/Progressive_medial_axis_2/internal/Nested_root_number.h>
 
@@ -1551,6 +1552,8 @@ public:
     std::size_t small_rational_overflows = 0;  ///< computations in 128-bit rationals redone in GMP rationals (a result overflowed)
     std::size_t mirror_ties = 0;               ///< ties found equal by a symmetry, without nested-root numbers (mirror_tie())
     std::size_t hinted_switch_times = 0;       ///< switch times computed from the centre kept with their vertex (Disk_hint)
+    std::size_t axis_aligned_disks = 0;        ///< disks with coordinates fixed exactly by axis-parallel sites (axis_aligned_disk())
+    std::size_t axis_aligned_ties = 0;         ///< ties of two times whose disks are one by their axis-parallel sites (same_axis_aligned_disk())
 
     /// Adds the counts of `b - a` (what another thread counted between two readings).
     void add_difference(const Filter_statistics& b, const Filter_statistics& a)
@@ -1570,6 +1573,8 @@ public:
       small_rational_overflows += b.small_rational_overflows - a.small_rational_overflows;
       mirror_ties += b.mirror_ties - a.mirror_ties;
       hinted_switch_times += b.hinted_switch_times - a.hinted_switch_times;
+      axis_aligned_disks += b.axis_aligned_disks - a.axis_aligned_disks;
+      axis_aligned_ties += b.axis_aligned_ties - a.axis_aligned_ties;
     }
   };
   static Filter_statistics& filter_statistics()
@@ -1746,6 +1751,26 @@ private:
     // already found equal
     if(a.exact_ && b.exact_ && a.exact_->tie && a.exact_->tie == b.exact_->tie)
       return EQUAL;
+    // Two events of one kind on one separator whose disks are one, as the
+    // relations of their axis-parallel sites show (four generators on one
+    // circle, where a map's lakes are drawn on a grid): equal without the
+    // exact stages, which found every such tie in GMP rationals
+    // (RESULTS.md, sixty-fifth session).  A switch or vanishing time is a
+    // function of the disk and the separator.
+    if constexpr(std::is_same<typename CK::FT, double>::value) {
+      if(a.kind_ == b.kind_ &&
+         (a.kind_ == Progressive_medial_axes::internal::TIME_SWITCH ||
+          a.kind_ == Progressive_medial_axes::internal::TIME_VANISH) &&
+         a.c_ == b.c_ && Progressive_medial_axes::internal::same_axis_aligned_disk(a.s_, b.s_)) {
+        ++filter_statistics().axis_aligned_ties;
+#ifdef CGAL_PMA2_CHECK_AXIS_ALIGNED_DISKS
+        // for the tests only (engine.cmake): each such tie confirmed by algebra
+        if(nested_sign(a, b) != ZERO)
+          throw std::logic_error("compare_times: a tie of one disk from axis-parallel sites that the nested-root numbers deny");
+#endif
+        return tie(a, b, EQUAL);
+      }
+    }
     if(!(a.short_coordinates() && b.short_coordinates())) {
       const typename Event_time_2::Dd *va, *vb;
       if(a.template dd<CK>(&va) == 1 && b.template dd<CK>(&vb) == 1) {
@@ -1835,6 +1860,28 @@ private:
     return compare_times(t, now) == SMALLER;
   }
 
+#ifdef CGAL_PMA2_CHECK_AXIS_ALIGNED_DISKS
+  // Throws if a coordinate found by axis_aligned_disk() is not the one that
+  // the nested-root numbers round the exact disk to.
+  static void check_axis_aligned_disk(const Site_2* s, const Progressive_medial_axes::internal::Triple_relations& rel,
+                                      const bool found[3], const double value[3])
+  {
+    const bool agree = with_nested_numbers(short_coordinates(s, s), [&](auto number) {
+      typedef decltype(number) N;
+      Progressive_medial_axes::internal::Circle_nt<N> circle;
+      if(!disk_nt<N>(s, rel, circle))
+        return false;
+      const N* c[3] = {&circle.x, &circle.y, &circle.r};
+      for(int i = 0; i < 3; ++i)
+        if(found[i] && c[i]->to_double() + 0.0 != value[i])
+          return false;
+      return true;
+    });
+    if(!agree)
+      throw std::logic_error("disk: a coordinate from axis-parallel sites that the nested-root numbers deny");
+  }
+#endif
+
   // The centre (x, y), with an exact zero as +0 whichever stage rounded it.
   static Point_2 point_of_doubles(double x, double y) { return Point_2(x + 0.0, y + 0.0); }
 
@@ -1869,6 +1916,30 @@ private:
       typedef std::decay_t<decltype(circle.x)> N;
       const N* c[3] = {&circle.x, &circle.y, &circle.r};
       return settle([](int) { return true; }, [&](int i) { return c[i]->to_double(); });
+    };
+    // Once the disk is known to exist: the coordinates that its axis-parallel
+    // sites fix as sums and halves of input coordinates, exactly
+    // (axis_aligned_disk()).  They lie halfway between two doubles as a
+    // rule, which no interval decides: on a map with many axis-parallel
+    // edges nearly every disk that double-double left went on to MPFR and
+    // GMP rationals for them (RESULTS.md, sixty-fifth session).
+    auto by_axis_aligned_sites = [&]() {
+      if constexpr(!std::is_same<typename CK::FT, double>::value) {
+        return false;
+      } else {
+        double exact[3];
+        bool found[3] = {false, false, false};
+        if(!Progressive_medial_axes::internal::axis_aligned_disk(s, found, exact) ||
+           !((found[0] && !settled[0]) || (found[1] && !settled[1]) || (found[2] && !settled[2])))
+          return false;
+        ++filter_statistics().axis_aligned_disks;
+#ifdef CGAL_PMA2_CHECK_AXIS_ALIGNED_DISKS
+        // for the tests only (engine.cmake): each such coordinate confirmed
+        // by the exact stage
+        check_axis_aligned_disk(s, rel, found, exact);
+#endif
+        return settle([&](int i) { return found[i]; }, [&](int i) { return exact[i]; });
+      }
     };
     bool branches_decided = false;
     Progressive_medial_axes::internal::Circle_nt<Interval> enclosure;
@@ -1911,6 +1982,8 @@ private:
         }
       } catch(Progressive_medial_axes::internal::Inexact_double_double_input&) {
       }
+      if(by_axis_aligned_sites())
+        return true;
     }
     {
       // The same computation in double-double intervals (about 100 bits,
@@ -1925,7 +1998,8 @@ private:
           return false;
         const Dd* c[3] = {&circle.x, &circle.y, &circle.r};
         if(found > 0 &&
-           settle([&](int i) { return c[i]->rounds_to_one_double(); }, [&](int i) { return c[i]->to_double(); }))
+           (settle([&](int i) { return c[i]->rounds_to_one_double(); }, [&](int i) { return c[i]->to_double(); }) ||
+            by_axis_aligned_sites()))
           return true;
       } catch(Uncertain_conversion_exception&) {
       }

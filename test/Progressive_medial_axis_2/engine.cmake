@@ -4,7 +4,7 @@ pma_add_test_program(test_medial_axis_oracle)
 # vertices on here (32,768 per slab in the library), so that the data shapes
 # test that path and the small random polygons the sequential one.
 target_compile_definitions(test_medial_axis_oracle PRIVATE CGAL_PMA2_EVOLUTION_SLAB_VERTICES=200)
-add_test(NAME oracle_filtered COMMAND test_medial_axis_oracle --only regressions,random,holes,data,touching,union,double)
+add_test(NAME oracle_filtered COMMAND test_medial_axis_oracle --only regressions,random,holes,data,lakes,touching,union,double)
 # Degenerate input (integer grids, Hilbert, Koch, regular polygons, glyphs):
 # every exact tie decided, against the oracle; and finely flattened glyphs,
 # whose default one-shot takes boundary evolution.
@@ -13,11 +13,13 @@ add_test(NAME oracle_degenerate COMMAND test_medial_axis_oracle --only degenerat
 # merges (the one-root and nested-root numbers redone in Gmpq where a result
 # overflows): no test shape overflows 128 bits, so in this build the 128-bit
 # rationals overflow at 40 bits.  This build also confirms each tie decided
-# by symmetry (mirror_tie()) in nested-root numbers, and fails if one is not.
+# by symmetry (mirror_tie()) in nested-root numbers, and fails if one is not;
+# and each coordinate of a disk rounded from its axis-parallel sites
+# (axis_aligned_disk(): the map-like polygons of the section lakes).
 pma_add_test_program(test_medial_axis_oracle_gmp_fallback SOURCE test_medial_axis_oracle.cpp)
 target_compile_definitions(test_medial_axis_oracle_gmp_fallback PRIVATE CGAL_PMA2_SMALL_RATIONAL_TEST_BITS=40
-                           CGAL_PMA2_CHECK_MIRROR_TIES)
-add_test(NAME oracle_degenerate_gmp_fallback COMMAND test_medial_axis_oracle_gmp_fallback --only degenerate)
+                           CGAL_PMA2_CHECK_MIRROR_TIES CGAL_PMA2_CHECK_AXIS_ALIGNED_DISKS)
+add_test(NAME oracle_degenerate_gmp_fallback COMMAND test_medial_axis_oracle_gmp_fallback --only degenerate,lakes)
 # The double-precision model: its promise (the exact topology, merges with
 # uncertain decisions redone exactly) on the data and degenerate shapes too.
 add_test(NAME oracle_epick COMMAND test_medial_axis_oracle --traits epick --quick)

@@ -4,7 +4,7 @@
 // axis at every step compared.
 //
 //   test_medial_axis_oracle [--quick] [--only SECTION,...] [--skip SHAPE]
-//       sections: regressions, random, holes, data, degenerate, fine, touching, union, double
+//       sections: regressions, random, holes, data, lakes, degenerate, fine, touching, union, double
 //                           [--traits filtered|epick|exact] [--seed-base N]
 //                           [--driver region|boundary]
 //
@@ -543,6 +543,40 @@ template <class Traits, class Get>
 std::optional<std::size_t> filter_counter(const Get&, long)
 {
   return std::nullopt;
+}
+
+// Map-like polygons (pma_test::random_lakes_polygon()): lakes as right
+// triangles and rectangles with axis-parallel sides, on a grid of 10^-5
+// near (30, 64.7).  Their disks have coordinates halfway between two
+// doubles, which the exact-decision traits round from the linear relations
+// of the axis-parallel sites (internal::axis_aligned_disk(); in the build
+// with CGAL_PMA2_CHECK_AXIS_ALIGNED_DISKS each such coordinate is checked
+// against the nested-root numbers).
+template <class Traits>
+void lake_tests(Checker<Traits>& checker, const Options& o)
+{
+  const int count = o.quick ? 20 : 150;
+  int done = 0;
+  for(int i = 0; i < count; ++i) {
+    const std::uint64_t seed = o.seed_base + 9000011u + std::uint64_t(i);
+    const int holes = 1 + int((seed * 2654435761u) % 40);
+    Rings rings = pma_test::random_lakes_polygon(seed, holes);
+    std::size_t n = 0;
+    for(const auto& r : rings) n += r.size();
+    const std::string what = "lakes seed " + std::to_string(seed) + " (" + std::to_string(holes) + " holes, " +
+                             std::to_string(n) + " vertices)";
+    if(!run_polygon(checker, rings, what, i < 3, {0.1, 0.5, 0.9})) {
+      std::cerr << "  failing polygon: " << wkt(rings) << "\n";
+      if(pma_test::failures() > 20) return;
+    }
+    ++done;
+  }
+  std::cout << "lakes: " << done << " polygons\n";
+  if(const std::optional<std::size_t> axis =
+       filter_counter<Traits>([](const auto& f) { return f.axis_aligned_disks; }, 0)) {
+    std::cout << "lakes: " << *axis << " disks with coordinates from axis-parallel sites, in this thread\n";
+    CHECK(*axis > 0, "no disk had a coordinate fixed by its axis-parallel sites");
+  }
 }
 
 // Degenerate input, where exact ties are the rule: polygons of integer grid
@@ -1532,6 +1566,7 @@ int run_all(const Options& o)
   if(wanted("random")) random_tests(checker, o);
   if(wanted("holes")) hole_tests(checker, o);
   if(wanted("data")) data_tests(checker, o);
+  if(wanted("lakes")) lake_tests(checker, o);
   if(wanted("degenerate")) degenerate_tests(checker, o);
   if(wanted("fine")) fine_tests(checker, o);
   if(wanted("touching")) touching_tests(checker, o);

@@ -266,6 +266,19 @@ std::ofstream open_out(const std::string& path)
   return f;
 }
 
+#if defined(__GLIBC__) && defined(__linux__)
+// Whether this process runs as it was started: nothing preloaded (valgrind,
+// heaptrack and other allocators come with LD_PRELOAD, and follow this
+// process, not necessarily one it execs) and not in secure mode (where
+// glibc drops its tunables).  Only then does the tool start itself again
+// or its other build (restart_if_worth_it()).
+[[maybe_unused]] bool plain_process()
+{
+  const char* preload = std::getenv("LD_PRELOAD");
+  return !(preload && *preload) && !getauxval(AT_SECURE);
+}
+#endif
+
 // Whether glibc's malloc can back its heaps with transparent huge pages in
 // this process: glibc 2.35 or later, its malloc in use (no LD_PRELOAD, which
 // valgrind, heaptrack and other allocators use; not a sanitized build), not
@@ -280,8 +293,7 @@ bool huge_page_heap_possible()
   return false;
 #endif
 #endif
-  const char* preload = std::getenv("LD_PRELOAD");
-  if((preload && *preload) || getauxval(AT_SECURE)) return false;
+  if(!plain_process()) return false;
   int major = 0, minor = 0;
   if(std::sscanf(gnu_get_libc_version(), "%d.%d", &major, &minor) != 2 || major < 2 || (major == 2 && minor < 35))
     return false;
@@ -363,8 +375,7 @@ std::string build_for_this_cpu(bool large)
   if(!choice.empty() && choice != "x86-64" && choice != "x86-64+fma")
     usage_error("PMA_TOOL_INSTRUCTION_SET must be x86-64 or x86-64+fma, not '" + choice + "'");
   if(choice == "x86-64" || (choice.empty() && !large)) return "";
-  const char* preload = std::getenv("LD_PRELOAD");
-  if((preload && *preload) || getauxval(AT_SECURE)) return "";
+  if(!plain_process()) return "";
   __builtin_cpu_init();
   if(!__builtin_cpu_supports("avx") || !__builtin_cpu_supports("fma")) return "";
   std::error_code error;
@@ -482,11 +493,12 @@ auto print_filter_statistics(const Traits&, int) -> decltype(Traits::filter_stat
               "filter_rational_comparisons %zu\nfilter_exact_comparisons %zu\nfilter_exact_ties %zu\n"
               "filter_small_rational_overflows %zu\nfilter_dd_interval_evaluations %zu\n"
               "filter_dd_interval_comparisons %zu\nfilter_dd_interval_disks %zu\nfilter_mirror_ties %zu\n"
-              "filter_hinted_switch_times %zu\n",
+              "filter_hinted_switch_times %zu\nfilter_axis_aligned_disks %zu\nfilter_axis_aligned_ties %zu\n",
               f.interval_evaluations, f.double_double_evaluations, f.mpfr_evaluations, f.rational_evaluations,
               f.exact_evaluations, f.mpfr_comparisons, f.rational_comparisons, f.exact_comparisons, f.exact_ties,
               f.small_rational_overflows, f.dd_interval_evaluations, f.dd_interval_comparisons,
-              f.dd_interval_disks, f.mirror_ties, f.hinted_switch_times);
+              f.dd_interval_disks, f.mirror_ties, f.hinted_switch_times, f.axis_aligned_disks,
+              f.axis_aligned_ties);
 }
 
 template <class Traits>

@@ -429,6 +429,33 @@ inline Ring random_rectilinear_polygon(std::uint64_t seed, int cells, bool keep_
   return ring;
 }
 
+namespace random_detail {
+
+/// The cells 0 .. g*g - 1 of a g x g grid, the first `count` of them drawn
+/// at random (a partial Fisher-Yates shuffle).
+inline std::vector<int> random_cells(Rng& rng, int g, int count)
+{
+  std::vector<int> cells(static_cast<std::size_t>(g) * g);
+  for(std::size_t i = 0; i < cells.size(); ++i) cells[i] = static_cast<int>(i);
+  for(int h = 0; h < count; ++h) {
+    const std::size_t j = h + rng.below(cells.size() - h);
+    std::swap(cells[h], cells[j]);
+  }
+  return cells;
+}
+
+/// Whether the outer ring is counter-clockwise, the holes clockwise, and
+/// the polygon valid (exactly).
+inline bool oriented_and_valid(const std::vector<Ring>& rings)
+{
+  if(ring_orientation(rings[0]) != CGAL::COUNTERCLOCKWISE) return false;
+  for(std::size_t h = 1; h < rings.size(); ++h)
+    if(ring_orientation(rings[h]) != CGAL::CLOCKWISE) return false;
+  return is_valid_polygon_with_holes(rings);
+}
+
+} // namespace random_detail
+
 /// An outer ring (a rectangle [0, w] x [0, h] with w, h in [1, 2] if outer_vertices == 4,
 /// else a star polygon of outer_vertices vertices with radii in [0.7, 1]) and `holes`
 /// small star holes (3 to 8 vertices each) in distinct cells of a grid inside the
@@ -465,12 +492,7 @@ inline std::vector<Ring> random_polygon_with_holes(std::uint64_t seed, int outer
     }
     const int g = (holes > 0) ? static_cast<int>(std::ceil(std::sqrt(static_cast<double>(holes)))) : 1;
     const double cell = 2 * half / g;
-    std::vector<int> cellsv(static_cast<std::size_t>(g) * g);
-    for(std::size_t i = 0; i < cellsv.size(); ++i) cellsv[i] = static_cast<int>(i);
-    for(int h = 0; h < holes; ++h) { // partial Fisher-Yates
-      const std::size_t j = h + rng.below(cellsv.size() - h);
-      std::swap(cellsv[h], cellsv[j]);
-    }
+    const std::vector<int> cellsv = random_cells(rng, g, holes);
     for(int h = 0; h < holes; ++h) {
       const int gi = cellsv[h] % g, gj = cellsv[h] / g;
       const double rho = cell * rng.uniform(0.2, 0.4);
@@ -481,11 +503,64 @@ inline std::vector<Ring> random_polygon_with_holes(std::uint64_t seed, int outer
       std::reverse(hole.begin(), hole.end()); // clockwise
       rings.push_back(hole);
     }
-    if(ring_orientation(rings[0]) != CGAL::COUNTERCLOCKWISE) continue;
-    bool ok = true;
-    for(std::size_t h = 1; h < rings.size() && ok; ++h)
-      ok = ring_orientation(rings[h]) == CGAL::CLOCKWISE;
-    if(ok && is_valid_polygon_with_holes(rings)) return rings;
+    if(oriented_and_valid(rings)) return rings;
+  }
+}
+
+/// A map-like polygon: a rectangle with coordinates on a grid of 10^-5 (as
+/// degrees near 30 E, 64.7 N, written with 5 decimals), and `holes` lakes
+/// in distinct cells of a square grid inside it, as `countries-land-10m`
+/// has by the hundred thousand: right triangles with axis-parallel legs (the
+/// right angle at any of the four corners) and axis-parallel rectangles,
+/// one in three of those with a vertex in the middle of an edge.  Lakes in
+/// one column or row of cells share their x or y coordinates half of the
+/// time.  Their medial disks have many coordinates halfway between two
+/// doubles (the midpoint of two input coordinates).  Outer ring
+/// counter-clockwise, holes clockwise; validity is checked exactly.
+inline std::vector<Ring> random_lakes_polygon(std::uint64_t seed, int holes)
+{
+  using namespace random_detail;
+  if(holes < 1) throw std::invalid_argument("random_lakes_polygon: holes < 1");
+  const int cell = 1000;   // grid units of 10^-5
+  auto X = [](int u) { return 30.0 + u * 1e-5; };
+  auto Y = [](int u) { return 64.7 + u * 1e-5; };
+  for(std::uint64_t k = 0;; ++k) {
+    Rng rng(derive_seed(seed, 9, k));
+    const int g = static_cast<int>(std::ceil(std::sqrt(static_cast<double>(holes))));
+    const int margin = rng.integer(50, 400);
+    std::vector<Ring> rings;
+    rings.push_back(Ring{Point(X(-margin), Y(-margin)), Point(X(g * cell + margin), Y(-margin)),
+                         Point(X(g * cell + margin), Y(g * cell + margin)), Point(X(-margin), Y(g * cell + margin))});
+    // the sides of the lakes in each column and row, shared or not
+    std::vector<std::pair<int, int> > column(g), row(g);
+    for(int i = 0; i < g; ++i) {
+      column[i] = {rng.integer(100, 400), rng.integer(600, 900)};
+      row[i] = {rng.integer(100, 400), rng.integer(600, 900)};
+    }
+    const std::vector<int> cells = random_cells(rng, g, holes);
+    for(int h = 0; h < holes; ++h) {
+      const int gi = cells[h] % g, gj = cells[h] / g;
+      const bool share_x = rng.integer(0, 1) == 1, share_y = rng.integer(0, 1) == 1;
+      const int x0 = gi * cell + (share_x ? column[gi].first : rng.integer(100, 400));
+      const int x1 = gi * cell + (share_x ? column[gi].second : rng.integer(600, 900));
+      const int y0 = gj * cell + (share_y ? row[gj].first : rng.integer(100, 400));
+      const int y1 = gj * cell + (share_y ? row[gj].second : rng.integer(600, 900));
+      // the corners, counter-clockwise
+      std::vector<std::pair<int, int> > c = {{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}};
+      const int kind = rng.integer(0, 5);
+      if(kind < 4) {
+        c.erase(c.begin() + kind);   // a right triangle
+      } else if(rng.integer(0, 2) == 0) {
+        const int side = rng.integer(0, 3);   // a flat vertex on that side
+        const auto a = c[side], b = c[(side + 1) % 4];
+        c.insert(c.begin() + side + 1, {(a.first + b.first) / 2 + (a.first == b.first ? 0 : rng.integer(-50, 50)),
+                                        (a.second + b.second) / 2 + (a.second == b.second ? 0 : rng.integer(-50, 50))});
+      }
+      Ring hole;
+      for(auto it = c.rbegin(); it != c.rend(); ++it) hole.push_back(Point(X(it->first), Y(it->second)));
+      rings.push_back(hole);
+    }
+    if(oriented_and_valid(rings)) return rings;
   }
 }
 
