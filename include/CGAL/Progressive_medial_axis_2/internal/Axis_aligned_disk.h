@@ -29,7 +29,6 @@
 
 #include <cmath>
 #include <cstdint>
-#include <limits>
 #include <type_traits>
 
 namespace CGAL {
@@ -106,6 +105,9 @@ struct Dyadic {
     unsigned __int128 m = n < 0 ? -static_cast<unsigned __int128>(n) : static_cast<unsigned __int128>(n);
     int x = e;
     const int b = bits_unsigned(m);
+    // the value is at least 2^(b - 1 + e): below 2^-1022 it may round to a
+    // subnormal, and rounding twice (to 53 bits, then in ldexp) could be wrong
+    if(b - 1 + e < -1022) return false;
     if(b > 53) {
       const int k = b - 53;
       const unsigned __int128 rest = m & ((static_cast<unsigned __int128>(1) << k) - 1);
@@ -121,7 +123,7 @@ struct Dyadic {
       }
     }
     const double r = std::ldexp(double(static_cast<std::uint64_t>(m)), x);
-    if(!std::isfinite(r) || r < (std::numeric_limits<double>::min)()) return false;
+    if(!std::isfinite(r)) return false;
     out = n < 0 ? -r : r;
     return true;
   }
@@ -181,12 +183,14 @@ bool axis_aligned_disk_exact(const Site* s, Dyadic v[3], bool known[3])
       continue;
     }
     for(int j = 0; j < 3; ++j) {
-      if(j == i || s[j].is_point || !(s[i].q.x() == s[j].p.x() && s[i].q.y() == s[j].p.y())) continue;
+      if(j == i || s[j].is_point || !(s[i].q.x() == s[j].p.x() && s[i].q.y() == s[j].p.y()) ||
+         (s[i].p.x() == s[i].q.x() && s[i].p.y() == s[i].q.y()) || (s[j].p.x() == s[j].q.x() && s[j].p.y() == s[j].q.y()))
+        continue;
       const bool vertical = s[i].p.x() == s[i].q.x() && s[j].p.x() == s[j].q.x() &&
                             (s[i].q.y() > s[i].p.y()) == (s[j].q.y() > s[j].p.y());
       const bool horizontal = s[i].p.y() == s[i].q.y() && s[j].p.y() == s[j].q.y() &&
                               (s[i].q.x() > s[i].p.x()) == (s[j].q.x() > s[j].p.x());
-      if(vertical != horizontal)   // (not both: a segment of length zero)
+      if(vertical || horizontal)
         on_disk[n_on_disk++] = &s[i].q;
     }
   }
