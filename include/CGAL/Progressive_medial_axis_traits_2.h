@@ -1758,10 +1758,7 @@ private:
     // (RESULTS.md, sixty-fifth session).  A switch or vanishing time is a
     // function of the disk and the separator.
     if constexpr(std::is_same<typename CK::FT, double>::value) {
-      if(a.kind_ == b.kind_ &&
-         (a.kind_ == Progressive_medial_axes::internal::TIME_SWITCH ||
-          a.kind_ == Progressive_medial_axes::internal::TIME_VANISH) &&
-         a.c_ == b.c_ && Progressive_medial_axes::internal::same_axis_aligned_disk(a.s_, b.s_)) {
+      if(disk_times_on_one_separator(a, b) && Progressive_medial_axes::internal::same_axis_aligned_disk(a.s_, b.s_)) {
         ++filter_statistics().axis_aligned_ties;
 #ifdef CGAL_PMA2_CHECK_AXIS_ALIGNED_DISKS
         // for the tests only (engine.cmake): each such tie confirmed by algebra
@@ -1815,9 +1812,7 @@ private:
     if(decided)
       return *decided;
     // a symmetric pair: equal without algebra
-    if(a.kind_ == b.kind_ &&
-       (a.kind_ == Progressive_medial_axes::internal::TIME_SWITCH || a.kind_ == Progressive_medial_axes::internal::TIME_VANISH) &&
-       a.c_ == b.c_ && Progressive_medial_axes::internal::mirror_tie<CK>(a.c_, a.s_, b.s_)) {
+    if(disk_times_on_one_separator(a, b) && Progressive_medial_axes::internal::mirror_tie<CK>(a.c_, a.s_, b.s_)) {
       ++filter_statistics().mirror_ties;
 #ifdef CGAL_PMA2_CHECK_MIRROR_TIES
       // for the tests only (engine.cmake): each such tie confirmed by algebra
@@ -1828,6 +1823,17 @@ private:
     }
     ++filter_statistics().exact_comparisons;
     return tie(a, b, Comparison_result(int(nested_sign(a, b))));
+  }
+
+  // Whether a and b are switch times, or vanishing times, on one separator:
+  // each a function of its triple's disk and the separator, so one disk
+  // means one time (the ties found without algebra above).
+  static bool disk_times_on_one_separator(const Event_time_2& a, const Event_time_2& b)
+  {
+    return a.kind_ == b.kind_ &&
+           (a.kind_ == Progressive_medial_axes::internal::TIME_SWITCH ||
+            a.kind_ == Progressive_medial_axes::internal::TIME_VANISH) &&
+           a.c_ == b.c_;
   }
 
   // The sign of a - b in nested-root numbers.
@@ -1997,9 +2003,11 @@ private:
         if(found == 0)
           return false;
         const Dd* c[3] = {&circle.x, &circle.y, &circle.r};
+        // (where the double intervals decided the branches, the relations
+        // were applied after double-double already)
         if(found > 0 &&
            (settle([&](int i) { return c[i]->rounds_to_one_double(); }, [&](int i) { return c[i]->to_double(); }) ||
-            by_axis_aligned_sites()))
+            (!branches_decided && by_axis_aligned_sites())))
           return true;
       } catch(Uncertain_conversion_exception&) {
       }
