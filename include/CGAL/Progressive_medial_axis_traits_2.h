@@ -1602,7 +1602,7 @@ public:
       // (each difference rounded to nearest is within half a unit of the
       // last place of the exact one: the next double above bounds it)
       const double e = (std::max)((std::max)(x.sup() - cx, cx - x.inf()), (std::max)(y.sup() - cy, cy - y.inf()));
-      err = std::nextafter(e, std::numeric_limits<double>::infinity());
+      err = Progressive_medial_axes::internal::next_up(e);
       return std::isfinite(cx) && std::isfinite(cy) && std::isfinite(err);
     }
     static Disk_hint from_doubles(double cx, double cy, double err)

@@ -1004,7 +1004,7 @@ int test_random_against_brute_force()
 {
   std::mt19937 rng(2024);
   auto uniform = [&](int lo, int hi) { return std::uniform_int_distribution<int>(lo, hi)(rng); };
-  int valid = 0, invalid = 0, big_valid = 0, big_invalid = 0, touching_valid = 0;
+  int valid = 0, invalid = 0, big_valid = 0, big_invalid = 0, touching_valid = 0, simple_small = 0;
   std::map<std::string, int> classes; // error classes seen
   for(int trial = 0; trial < 80000; ++trial) {
     Rings rings;
@@ -1108,6 +1108,19 @@ int test_random_against_brute_force()
       ++classes[kind];
     }
     touching_valid += (expected && !strict);
+    // the validator's shortcut for small polygons: exactly the strictly
+    // valid ones (no touching) of at most 64 vertices
+    std::size_t vertices = 0;
+    for(const auto& ring : rings) vertices += ring.size();
+    const bool simple = CGAL::Progressive_medial_axes::internal::simple_small_polygon<K>(rings);
+    simple_small += simple;
+    if(simple != (strict && vertices <= 64)) {
+      std::ostringstream wkt;
+      pma_tool::write_wkt_polygon(wkt, rings);
+      std::fprintf(stderr, "trial %d: simple_small_polygon says %d, brute force says %s (%zu vertices) for\n  %s\n", trial,
+                   int(simple), strict ? "simple" : "not simple", vertices, wkt.str().c_str());
+      REQUIRE(false);
+    }
     if(got != expected) {
       std::ostringstream wkt;
       pma_tool::write_wkt_polygon(wkt, rings);
@@ -1122,9 +1135,10 @@ int test_random_against_brute_force()
   std::printf("  random polygons: %d valid, %d invalid, all agree with the brute force\n", valid, invalid);
   std::printf("    (of which larger polygons: %d valid, %d invalid)\n", big_valid, big_invalid);
   std::printf("    of which valid only because rings may touch at vertices: %d\n", touching_valid);
+  std::printf("    accepted by the shortcut for small polygons: %d\n", simple_small);
   for(const auto& c : classes)
     std::printf("    %-36s %6d\n", c.first.c_str(), c.second);
-  REQUIRE(valid > 1000 && invalid > 1000 && touching_valid > 1000);
+  REQUIRE(valid > 1000 && invalid > 1000 && touching_valid > 1000 && simple_small > 1000);
   REQUIRE(classes.size() == 9 && !classes.count("self-intersection (other)")); // every class of geometric error but non-finite coordinates
   return 0;
 }

@@ -21,6 +21,7 @@
 #include <CGAL/Progressive_medial_axis_2/internal/Input_conversion.h>
 
 #include <CGAL/Kernel_traits.h>
+#include <CGAL/Polygon_2_algorithms.h>
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 
 #include <CGAL/enum.h>
@@ -864,6 +865,73 @@ void validate_polygon_rings(const Rings<typename Kernel::Point_2>& rings)
 
 namespace internal {
 
+/// Whether `rings` is a valid polygon whose rings are simple and pairwise
+/// disjoint (no ring touches itself or another, no vertex lies on another
+/// edge), for a polygon of at most `max_vertices` vertices, by testing every
+/// pair of edges (the brute force of the validator's tests), with the exact
+/// predicates of `Kernel`.  False says nothing: the validator then runs, and
+/// names the problem or finds the places where rings touch.  On a glyph of a
+/// few vertices, the validator's first call in a process (its search tree
+/// and sorts, code run nowhere else) was a quarter of the one-shot's time,
+/// page faults mostly (RESULTS.md, "The first call on tiny polygons",
+/// sixty-sixth session).
+template <class Kernel>
+bool simple_small_polygon(const Rings<typename Kernel::Point_2>& rings, std::size_t max_vertices = 64)
+{
+  typedef typename Kernel::Point_2 Point_2;
+  if(rings.empty()) return false;
+  std::size_t n = 0;
+  for(const auto& ring : rings) {
+    if(ring.size() < 3) return false;
+    n += ring.size();
+  }
+  if(n > max_vertices) return false;
+  const Kernel k;
+  const auto orientation = k.orientation_2_object();
+  const auto compare_xy = k.compare_xy_2_object();
+  for(const auto& ring : rings)
+    for(const Point_2& p : ring)
+      if(!CGAL::is_finite(p.x()) || !CGAL::is_finite(p.y())) return false;
+  // p on the segment ab, given that the three are collinear
+  auto between = [&](const Point_2& a, const Point_2& b, const Point_2& p) {
+    const Comparison_result ap = compare_xy(a, p), pb = compare_xy(p, b);
+    return ap == EQUAL || pb == EQUAL || ap == pb;
+  };
+  auto meet = [&](const Point_2& a, const Point_2& b, const Point_2& c, const Point_2& d) {
+    if(!do_overlap(a.bbox() + b.bbox(), c.bbox() + d.bbox())) return false;
+    const Orientation o1 = orientation(a, b, c), o2 = orientation(a, b, d);
+    const Orientation o3 = orientation(c, d, a), o4 = orientation(c, d, b);
+    if(o1 != COLLINEAR && o2 != COLLINEAR && o3 != COLLINEAR && o4 != COLLINEAR)
+      return o1 != o2 && o3 != o4;
+    return (o1 == COLLINEAR && between(a, b, c)) || (o2 == COLLINEAR && between(a, b, d)) ||
+           (o3 == COLLINEAR && between(c, d, a)) || (o4 == COLLINEAR && between(c, d, b));
+  };
+  for(std::size_t r = 0; r < rings.size(); ++r) {
+    const std::size_t m = rings[r].size();
+    for(std::size_t i = 0; i < m; ++i) {
+      const Point_2 &a = rings[r][(i + m - 1) % m], &g = rings[r][i], &c = rings[r][(i + 1) % m];
+      if(compare_xy(g, c) == EQUAL) return false;   // a zero-length edge
+      if(orientation(a, g, c) == COLLINEAR && compare_xy(a, g) == compare_xy(c, g)) return false;   // a spike
+      // every later edge that does not share a vertex with edge (g, c)
+      for(std::size_t s = r; s < rings.size(); ++s) {
+        const std::size_t ms = rings[s].size();
+        for(std::size_t j = (s == r ? i + 1 : 0); j < ms; ++j) {
+          if(s == r && (j == i + 1 || (j + 1) % m == i)) continue;
+          if(meet(g, c, rings[s][j], rings[s][(j + 1) % ms])) return false;
+        }
+      }
+    }
+  }
+  // disjoint simple rings: each hole inside the outer ring and in no other hole
+  for(std::size_t h = 1; h < rings.size(); ++h) {
+    const Point_2& p = rings[h][0];
+    if(bounded_side_2(rings[0].begin(), rings[0].end(), p, k) != ON_BOUNDED_SIDE) return false;
+    for(std::size_t o = 1; o < rings.size(); ++o)
+      if(o != h && bounded_side_2(rings[o].begin(), rings[o].end(), p, k) != ON_UNBOUNDED_SIDE) return false;
+  }
+  return true;
+}
+
 // validate_polygon(), returning whether a vertex lies inside an edge (a T),
 // with `on_edges`, which ones (as (ring, index) pairs; a vertex may be listed
 // more than once), and with `edges`, the edges they lie inside (in the same
@@ -880,7 +948,13 @@ bool validate_and_find_vertices_on_edges(const Rings<Point_2>& rings,
     if(edges) *edges = validator.edges_with_vertices();
     return validator.has_vertices_on_edges();
   };
+  auto simple = [&]() {   // (no vertex inside an edge)
+    if(on_edges) on_edges->clear();
+    if(edges) edges->clear();
+    return false;
+  };
   if constexpr(std::is_same<typename EK::type, K>::value) {
+    if(simple_small_polygon<K>(rings)) return simple();
     Polygon_rings_validator<K> validator(rings, true);
     validator.run();
     return finish(validator);
@@ -890,6 +964,7 @@ bool validate_and_find_vertices_on_edges(const Rings<Point_2>& rings,
       converted.emplace_back();
       for(const auto& p : r) converted.back().push_back(EK::point(p));
     }
+    if(simple_small_polygon<typename EK::type>(converted)) return simple();
     Polygon_rings_validator<typename EK::type> validator(converted, true);
     validator.run();
     return finish(validator);

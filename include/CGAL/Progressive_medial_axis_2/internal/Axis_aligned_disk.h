@@ -27,6 +27,8 @@
 #ifndef CGAL_PROGRESSIVE_MEDIAL_AXIS_2_INTERNAL_AXIS_ALIGNED_DISK_H
 #define CGAL_PROGRESSIVE_MEDIAL_AXIS_2_INTERNAL_AXIS_ALIGNED_DISK_H
 
+#include <CGAL/Progressive_medial_axis_2/internal/Float_bits.h>
+
 #include <cmath>
 #include <cstdint>
 #include <type_traits>
@@ -55,10 +57,9 @@ struct Dyadic {
       d.ok = false;
       return d;
     }
-    int e;
-    const double m = std::frexp(x, &e);   // x = m 2^e, 0.5 <= |m| < 1
-    d.n = std::int64_t(std::ldexp(m, 53));  // exact
-    d.e = e - 53;
+    std::int64_t n;
+    integer_and_exponent(x, n, d.e);
+    d.n = n;
     return d;
   }
 
@@ -122,8 +123,8 @@ struct Dyadic {
         }
       }
     }
-    const double r = std::ldexp(double(static_cast<std::uint64_t>(m)), x);
-    if(!std::isfinite(r)) return false;
+    double r;
+    if(!normal_double(static_cast<std::uint64_t>(m), x, r)) return false;
     out = n < 0 ? -r : r;
     return true;
   }

@@ -17,6 +17,7 @@
 #ifndef CGAL_PROGRESSIVE_MEDIAL_AXIS_2_INTERNAL_DOUBLE_DOUBLE_H
 #define CGAL_PROGRESSIVE_MEDIAL_AXIS_2_INTERNAL_DOUBLE_DOUBLE_H
 
+#include <CGAL/Progressive_medial_axis_2/internal/Float_bits.h>
 #include <CGAL/Interval_nt.h>
 #include <CGAL/Uncertain.h>
 
@@ -184,8 +185,8 @@ public:
   double radius() const { return r_; }
   /// An upper bound of the magnitudes in the interval.
   double magnitude() const { return up(mag(v_) + r_); }
-  double inf() const { return std::nextafter(v_.hi() - up(std::fabs(v_.lo()) + r_), -HUGE_VAL); }
-  double sup() const { return std::nextafter(v_.hi() + up(std::fabs(v_.lo()) + r_), HUGE_VAL); }
+  double inf() const { return next_down(v_.hi() - up(std::fabs(v_.lo()) + r_)); }
+  double sup() const { return next_up(v_.hi() + up(std::fabs(v_.lo()) + r_)); }
   Interval_nt<false> to_interval() const { return Interval_nt<false>(inf(), sup()); }
   double to_double() const { return v_.to_double(); }
   /// Whether every value of the interval rounds to the same double, then

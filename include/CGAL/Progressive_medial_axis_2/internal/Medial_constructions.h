@@ -300,7 +300,9 @@ Line_nt<NT> oriented_line(const Site_nt<NT>& s)
 /// power of two), `misses_per_page` (below), `holds(key)`, `value()` and
 /// `set(key, value)`.  The table starts with 64 entries and grows by a
 /// factor of four as misses come (a new table each time, the old entries
-/// dropped), so that a small polygon touches a few pages only: a table of
+/// dropped; fewer at first where 64 entries are more than a 4 KB page: the
+/// disks of triples in intervals, 21 KB, were 4 of the 37 page faults of a
+/// glyph of 8 vertices), so that a small polygon touches a few pages only: a table of
 /// 4,096 interval lines at once was a third of the page faults of a polygon
 /// of 268 vertices, and one of 256 (20 KB) still 2% of the first call on a
 /// glyph of 14 vertices (RESULTS.md, "The cold first call of tiny glyphs").
@@ -324,7 +326,7 @@ public:
   template <class Key, class Compute>
   auto value(std::uint64_t hash, const Key& key, const Compute& compute) -> decltype(compute())
   {
-    if(!entries_ && !make(6))
+    if(!entries_ && !make(first_bits()))
       return compute();
     Entry* e = &entries_[std::size_t(hash >> (64 - bits_))];
     if(e->holds(key))
@@ -339,6 +341,13 @@ public:
   }
 
 private:
+  // the first table: 64 entries, or fewer where that is more than a page
+  static constexpr unsigned first_bits()
+  {
+    unsigned b = 6;
+    while(b > 2 && (sizeof(Entry) << b) > 4096) --b;
+    return b;
+  }
   void release()
   {
     if constexpr(std::is_trivial<Entry>::value)

@@ -25,6 +25,7 @@
 
 #include <CGAL/Gmpq.h>
 #include <CGAL/Interval_nt.h>
+#include <CGAL/Progressive_medial_axis_2/internal/Float_bits.h>
 #include <CGAL/enum.h>
 
 #include <cmath>
@@ -61,9 +62,8 @@ public:
       }
     }
     int e;
-    const double m = std::frexp(x, &e);              // x = m 2^e, 0.5 <= |m| < 1
-    std::int64_t mi = std::int64_t(std::ldexp(m, 53));  // exact
-    e -= 53;
+    std::int64_t mi;
+    integer_and_exponent(x, mi, e);   // x = mi 2^e
     const int zeros = __builtin_ctzll(std::uint64_t(mi < 0 ? -mi : mi));
     mi >>= zeros;
     e += zeros;
@@ -266,7 +266,10 @@ private:
   {
     if(x < 0) return false;
     const Uint u = Uint(x);
-    Uint r = Uint(std::sqrt(double(x)));
+    // (in 64-bit halves: the conversions of 128-bit integers are calls into
+    // libgcc; r < 2^64 as x < 2^127)
+    const double estimate = double(std::int64_t(x >> 64)) * 18446744073709551616.0 + double(std::uint64_t(x));
+    Uint r = Uint(std::uint64_t(std::sqrt(estimate)));
     // correct the floating-point estimate (r < 2^64, so r^2 fits)
     while(r > 0 && r * r > u) --r;
     while((r + 1) * (r + 1) <= u) ++r;
@@ -282,7 +285,7 @@ private:
     auto half = [](std::uint64_t x) {
       const double d = double(x);
       const bool exact = d < 18446744073709551616.0 && std::uint64_t(d) == x;
-      return exact ? Interval_nt<false>(d) : Interval_nt<false>(std::nextafter(d, 0.0), std::nextafter(d, HUGE_VAL));
+      return exact ? Interval_nt<false>(d) : Interval_nt<false>(next_toward_zero(d), next_up(d));
     };
     Interval_nt<false> r = half(std::uint64_t(u >> 64)) * Interval_nt<false>(18446744073709551616.0) + half(std::uint64_t(u));
     return negative ? -r : r;
