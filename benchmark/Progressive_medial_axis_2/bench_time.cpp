@@ -2,7 +2,7 @@
 // peers, on polygon files, in one run.
 //
 //   bench_time [--runs N] [--timeout SECONDS] [--exact-timeout SECONDS]
-//              [--methods m1,m2,...] [--no-baseline] [--nv-dump DIR] FILE.wkt...
+//              [--methods m1,m2,...] [--no-baseline] [--nv-dump DIR] [--warm] FILE.wkt...
 //
 // Methods (default: all, in this order):
 //   pma_filtered      our full progressive sequence, filtered traits (exact decisions),
@@ -43,6 +43,11 @@
 // that fails or does not finish in time ends the method's runs, and a method that
 // did not finish in time is not run again on files with as many vertices or more
 // (status "not run: did not finish in T s on N vertices").  Times are medians of N runs.
+// Each run is thus the method's first call in its process, which pays for the first
+// touch of its code and data (page faults: 10 to 25 us each on the 2-core VM of
+// RESULTS.md, sixty-sixth session).  With --warm, the child calls the method once
+// on the same polygon before the timed call, untimed: what a program that computes
+// many polygons pays for each after its first (the note then starts with "warm;").
 // pma_filtered is always measured (first, for every file) unless --no-baseline,
 // so that every row has a ratio to it taken in the same invocation.
 //
@@ -271,17 +276,22 @@ struct Measure {
 };
 
 // Runs one measurement in a child process, with a time limit.
-Measure measure(const std::string& m, const Rings& rings, double timeout, const std::string& nv_dump_file)
+Measure measure(const std::string& m, const Rings& rings, double timeout, const std::string& nv_dump_file, bool warm)
 {
   Measure r;
   Child_result c = run_in_child(
     [&]() {
       std::string note;
       double aux = -1;
+      if(warm) {   // (a first call, untimed)
+        run_method(m, rings, note, aux, "");
+        note.clear();
+        aux = -1;
+      }
       const double t = run_method(m, rings, note, aux, nv_dump_file);
       char b[128];
       std::snprintf(b, sizeof(b), "%.9g\n%.9g\n", t, aux);
-      return std::string(b) + note;
+      return std::string(b) + (warm ? "warm;" : "") + note;
     },
     timeout);
   r.rss_mb = c.rss_mb;
@@ -315,6 +325,7 @@ int main(int argc, char** argv)
   bool baseline = true;
   std::vector<std::string> methods = all_methods;
   std::string nv_dump_dir;
+  bool warm = false;
   std::vector<std::string> files;
   for(int i = 1; i < argc; ++i) {
     std::string a = argv[i];
@@ -324,9 +335,10 @@ int main(int argc, char** argv)
     else if(a == "--methods" && i + 1 < argc) methods = split(argv[++i], ',');
     else if(a == "--no-baseline") baseline = false;
     else if(a == "--nv-dump" && i + 1 < argc) nv_dump_dir = argv[++i];
+    else if(a == "--warm") warm = true;
     else if(a == "--help" || a == "-h") {
       std::cout << "usage: bench_time [--runs N] [--timeout S] [--exact-timeout S] [--methods m1,m2,...]\n"
-                   "                  [--no-baseline] [--nv-dump DIR] FILE...\n"
+                   "                  [--no-baseline] [--nv-dump DIR] [--warm] FILE...\n"
                    "methods:";
       for(const std::string& m : all_methods) std::cout << ' ' << m;
       std::cout << "\n";
@@ -376,7 +388,7 @@ int main(int argc, char** argv)
       for(int k = 0; k < runs; ++k) {
         const std::string dump =
           ((m == "pma_filtered" || m == "pma_boundary") && k == 0 && !nv_dump_dir.empty()) ? nv_dump_dir + "/" + shape + ".nv.txt" : "";
-        last = measure(m, rings, limit, dump);
+        last = measure(m, rings, limit, dump, warm);
         rss = std::max(rss, last.rss_mb);
         if(!last.ok) {
           limits.record(m, n, last.timed_out);
