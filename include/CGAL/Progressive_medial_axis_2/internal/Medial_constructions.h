@@ -298,11 +298,11 @@ Line_nt<NT> oriented_line(const Site_nt<NT>& s)
 /// decisions.  `Entry` is default-constructible, its default value is an
 /// unused entry, and it has `max_bits` (the table's largest size, as a
 /// power of two), `misses_per_page` (below), `holds(key)`, `value()` and
-/// `set(key, value)`.  The table starts with 64 entries and grows by a
-/// factor of four as misses come (a new table each time, the old entries
-/// dropped; fewer at first where 64 entries are more than a 4 KB page: the
-/// disks of triples in intervals, 21 KB, were 4 of the 37 page faults of a
-/// glyph of 8 vertices), so that a small polygon touches a few pages only: a table of
+/// `set(key, value)`.  The table starts with 64 entries, or fewer where 64
+/// are more than a 4 KB page (the disks of triples in intervals, 21 KB, were
+/// 4 of the 37 page faults of a glyph of 8 vertices), and grows by a factor
+/// of four as misses come, up to 2^max_bits entries (a new table each time,
+/// the old entries dropped), so that a small polygon touches a few pages only: a table of
 /// 4,096 interval lines at once was a third of the page faults of a polygon
 /// of 268 vertices, and one of 256 (20 KB) still 2% of the first call on a
 /// glyph of 14 vertices (RESULTS.md, "The cold first call of tiny glyphs").
@@ -334,7 +334,7 @@ public:
     const auto value = compute();
     // (once there were many misses, in a larger table)
     if(++misses_ > (std::max)(std::size_t(2) << bits_, (sizeof(Entry) << (bits_ + 2)) / 4096 * Entry::misses_per_page) &&
-       bits_ < Entry::max_bits && make(bits_ + 2))
+       bits_ < Entry::max_bits && make((std::min)(bits_ + 2, unsigned(Entry::max_bits))))
       e = &entries_[std::size_t(hash >> (64 - bits_))];
     e->set(key, value);
     return value;
