@@ -7,6 +7,7 @@
 #include <CGAL/Polygon_2_algorithms.h>
 #include <CGAL/intersections.h>
 #include <CGAL/Exact_rational.h>
+#include <CGAL/Simple_cartesian.h>
 
 #include <CGAL/Progressive_medial_axis_2/Input_error.h>
 #include <pma_tool/polygon_io.h>
@@ -1000,11 +1001,29 @@ bool brute_force_valid_touching(const Rings& rings)
   return true;
 }
 
+// Whether validate_polygon() accepts `rings` with their points converted to
+// kernel K2.
+template <class K2>
+bool validate_polygon_accepts(const Rings& rings)
+{
+  CGAL::Progressive_medial_axes::Rings<typename K2::Point_2> converted;
+  for(const auto& ring : rings) {
+    converted.emplace_back();
+    for(const Point& p : ring) converted.back().emplace_back(p.x(), p.y());
+  }
+  try {
+    CGAL::Progressive_medial_axes::validate_polygon(converted);
+  } catch(const Input_error&) {
+    return false;
+  }
+  return true;
+}
+
 int test_random_against_brute_force()
 {
   std::mt19937 rng(2024);
   auto uniform = [&](int lo, int hi) { return std::uniform_int_distribution<int>(lo, hi)(rng); };
-  int valid = 0, invalid = 0, big_valid = 0, big_invalid = 0, touching_valid = 0, simple_small = 0;
+  int valid = 0, invalid = 0, big_valid = 0, big_invalid = 0, touching_valid = 0, simple_small = 0, other_kernels = 0;
   std::map<std::string, int> classes; // error classes seen
   for(int trial = 0; trial < 80000; ++trial) {
     Rings rings;
@@ -1128,6 +1147,21 @@ int test_random_against_brute_force()
                    got ? "valid" : "invalid", message.c_str(), expected ? "valid" : "invalid", wkt.str().c_str());
       REQUIRE(false);
     }
+    // validate_polygon() of the same rings in other kernels, which take the
+    // shortcut and the validator through their own predicates: a kernel of
+    // doubles converts the points to Epick, exact rationals (every fourth
+    // trial: slower) use theirs
+    const bool rational = trial % 4 == 0;
+    const bool agree = validate_polygon_accepts<CGAL::Simple_cartesian<double> >(rings) == expected &&
+                       (!rational || validate_polygon_accepts<CGAL::Simple_cartesian<CGAL::Exact_rational> >(rings) == expected);
+    other_kernels += 1 + rational;
+    if(!agree) {
+      std::ostringstream wkt;
+      pma_tool::write_wkt_polygon(wkt, rings);
+      std::fprintf(stderr, "trial %d: validate_polygon() in another kernel does not say %s for\n  %s\n", trial,
+                   expected ? "valid" : "invalid", wkt.str().c_str());
+      REQUIRE(false);
+    }
     (expected ? valid : invalid)++;
     if(trial % 50 == 1)
       (expected ? big_valid : big_invalid)++;
@@ -1136,6 +1170,7 @@ int test_random_against_brute_force()
   std::printf("    (of which larger polygons: %d valid, %d invalid)\n", big_valid, big_invalid);
   std::printf("    of which valid only because rings may touch at vertices: %d\n", touching_valid);
   std::printf("    accepted by the shortcut for small polygons: %d\n", simple_small);
+  std::printf("    checked again by validate_polygon() in Simple_cartesian<double> and <Exact_rational>: %d\n", other_kernels);
   for(const auto& c : classes)
     std::printf("    %-36s %6d\n", c.first.c_str(), c.second);
   REQUIRE(valid > 1000 && invalid > 1000 && touching_valid > 1000 && simple_small > 1000);
