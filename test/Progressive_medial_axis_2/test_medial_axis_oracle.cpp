@@ -107,6 +107,8 @@ std::size_t g_path_split_one_shots = 0;
 // One-shots whose last parts were cut smaller (main() lowers the size from
 // which this is done, for the test polygons, which are small).
 std::size_t g_tapered_one_shots = 0;
+// one-shots that counted the steps of region growing from their triangles
+std::size_t g_counted_steps = 0;
 int g_default_min_tail_target = 0;
 
 // f() computed in a task arena of `threads` threads (0: where it is called;
@@ -398,6 +400,7 @@ bool run_polygon(Checker<Traits>& checker, const Rings& rings, const std::string
     ++count;
     CGAL::Progressive_medial_axis_statistics stats;
     CGAL::Progressive_medial_axes::internal::split_triangulation_paths_first() = count % 2 == 0;
+    CGAL::Progressive_medial_axes::internal::one_shots_count_region_growing_steps() = true;
     auto one_shot = [&] {
       return CGAL::Progressive_medial_axes::internal::one_shot_medial_axis(
         CGAL::Progressive_medial_axes::internal::rings_of<typename Traits::Kernel>(rings), Traits(), CGAL::CHECK_INPUT,
@@ -414,6 +417,18 @@ bool run_polygon(Checker<Traits>& checker, const Rings& rings, const std::string
     g_split_one_shots += stats.split_triangulations;
     g_path_split_one_shots += stats.split_triangulation_holes > 0 ? 1 : 0;
     CGAL::Progressive_medial_axes::internal::split_triangulation_paths_first() = false;
+    CGAL::Progressive_medial_axes::internal::one_shots_count_region_growing_steps() = false;
+    // the steps of region growing, counted from the one-shot's triangles
+    // unless it triangulated the polygon in two sides (the tool's --stats)
+    CHECK(stats.region_growing_steps.has_value() == (stats.split_triangulations == 0),
+          what << ": the one-shot " << (stats.region_growing_steps ? "counted" : "did not count")
+               << " the steps of region growing, split_triangulations " << stats.split_triangulations);
+    if(stats.region_growing_steps) {
+      ++g_counted_steps;
+      CHECK(*stats.region_growing_steps == pma.number_of_steps(),
+            what << ": the one-shot counted " << *stats.region_growing_steps << " steps of region growing, it takes "
+                 << pma.number_of_steps());
+    }
     // (the last parts cut smaller: several times the parts asked for)
     if(stats.parts > parts + 1) ++g_tapered_one_shots;
     // never where a vertex lies inside an edge: its point and its edge could
@@ -1585,6 +1600,9 @@ int run_all(const Options& o)
     CHECK(g_path_split_one_shots > 0, "no one-shot triangulated its polygon in two sides along a path through holes");
 #endif
   std::cout << g_tapered_one_shots << " one-shots with their last parts cut smaller\n";
+  std::cout << g_counted_steps << " one-shots counted the steps of region growing\n";
+  if(g_driver == CGAL::REGION_GROWING && (wanted("random") || wanted("holes")))
+    CHECK(g_counted_steps > 0, "no one-shot counted the steps of region growing");
 #ifdef CGAL_PMA2_USE_TBB
   if(tbb::this_task_arena::max_concurrency() > 1 && g_driver == CGAL::REGION_GROWING &&
      (wanted("random") || wanted("holes")))

@@ -820,6 +820,10 @@ int run(const Options& o)
   // runs while the other polygons are computed; the polygons after repair
   // are numbered once all are done.
   const bool repair_in_tasks = o.repair && !progressive;
+  // --stats prints the steps of region growing, which the one-shots count
+  // from their triangles (see below)
+  if(o.stats && !progressive && o.union_with.empty())
+    CGAL::Progressive_medial_axes::internal::one_shots_count_region_growing_steps() = true;
   typedef CGAL::Progressive_medial_axes::internal::Thread_counters<Traits> Counters;
   Counters counters;   // the filter counters of the other threads
   std::mutex counters_mutex;
@@ -1116,7 +1120,9 @@ int run(const Options& o)
     const auto filters = filter_counters<Traits>(0);
     in_arena([&]() {
       for_each_polygon(jobs_largest_first, [&](std::size_t k) {
-        jobs[k].steps = PMA(jobs[k].input->rings, Traits(), CGAL::TRUST_INPUT).number_of_steps();
+        // (counted by the one-shot where its triangles are region growing's)
+        const auto& counted = jobs[k].stats.region_growing_steps;
+        jobs[k].steps = counted ? *counted : PMA(jobs[k].input->rings, Traits(), CGAL::TRUST_INPUT).number_of_steps();
       });
     });
     restore_filter_counters<Traits>(filters, 0);

@@ -17,6 +17,7 @@
 #include <CGAL/Progressive_medial_axis_2/Merge_statistics.h>
 
 #include <cstddef>
+#include <optional>
 
 namespace CGAL {
 
@@ -61,6 +62,7 @@ struct Progressive_medial_axis_statistics {
   std::size_t boundary_evolution_one_shots = 0; ///< one shot: 1 where boundary evolution computed the axis (finely sampled boundaries, see `medial_axis_2()`), else 0
   std::size_t abandoned_divide_and_conquers = 0; ///< one shot: 1 where the divide and conquer stopped because the merges of a part crossed hundreds of cells a triangle, and boundary evolution computed the axis (or, where it did no better, the divide and conquer again without stopping), else 0
   std::size_t region_growing_one_shots = 0; ///< one shot: 1 where the divide and conquer (or boundary evolution) met an anomaly and region growing computed the axis again (see `medial_axis_2()`; with exact decisions, for the double model too), else 0
+  std::optional<std::size_t> region_growing_steps; ///< one shot: the steps that region growing takes on the same polygon (`Progressive_medial_axis_2::number_of_steps()`), counted from the one-shot's own triangulation (which is region growing's unless the polygon was triangulated in two sides), where the process asked for it (`Progressive_medial_axes::internal::one_shots_count_region_growing_steps()`, set by the tool's `--stats`: without it, a second triangulation of every polygon); else empty
 };
 
 /*!

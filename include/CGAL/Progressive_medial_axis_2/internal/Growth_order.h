@@ -44,6 +44,17 @@ namespace CGAL {
 namespace Progressive_medial_axes {
 namespace internal {
 
+/// The steps of a growth, flat: step k adds triangles[start[k]] to
+/// triangles[start[k + 1] - 1], in the order they are merged.  (A vector
+/// for each step cost a block of the heap for each triangle.)
+struct Growth_steps {
+  std::vector<int> triangles;
+  std::vector<int> start;   // (one more entry than the steps)
+  std::size_t size() const { return start.empty() ? 0 : start.size() - 1; }
+  const int* begin(std::size_t k) const { return triangles.data() + start[k]; }
+  const int* end(std::size_t k) const { return triangles.data() + start[k + 1]; }
+};
+
 class Growth_order
 {
 public:
@@ -55,7 +66,9 @@ public:
                const std::vector<int>& place = std::vector<int>())
     : tris_(tris), added_(tris.size(), 0), runs_(number_of_points, 0)
   {
-    steps_.push_back(std::vector<int>());
+    steps_.triangles.reserve(tris.size());
+    steps_.start.reserve(tris.size() + 1);
+    new_step();
     add(start);
     std::size_t next_start = 0;
     for(;;) {
@@ -78,7 +91,7 @@ public:
               break;
             }
         }
-        steps_.push_back(std::vector<int>());
+        new_step();
         add(t);
         continue;
       }
@@ -87,17 +100,20 @@ public:
       for(int e = 0; e < 3; ++e) {
         int u = tris_[t].nbr[e];
         if(u < 0 || added_[u]) continue;
-        steps_.push_back(std::vector<int>());
+        new_step();
         add(u);
         close_pinches();
-        CGAL_assertion(step_is_pinch_free(steps_.back()));
+        CGAL_assertion(step_is_pinch_free(steps_.start.back()));
       }
     }
+    steps_.start.push_back(int(steps_.triangles.size()));
   }
 
   /// The steps: step 0 holds the first triangle; each later step holds the
   /// triangles it adds, in the order they are merged.
-  const std::vector<std::vector<int> >& steps() const { return steps_; }
+  const Growth_steps& steps() const { return steps_; }
+  /// The same, moved out.
+  Growth_steps take_steps() { return std::move(steps_); }
 
 private:
   // The fan position of triangle t at its corner i: the triangles before
@@ -105,12 +121,13 @@ private:
   int cw_neighbour(int t, int i) const { return tris_[t].nbr[(i + 2) % 3]; }
   int ccw_neighbour(int t, int i) const { return tris_[t].nbr[(i + 1) % 3]; }
   bool in(int t) const { return t >= 0 && added_[t]; }
+  void new_step() { steps_.start.push_back(int(steps_.triangles.size())); }
 
   void add(int t)
   {
     CGAL_assertion(!added_[t]);
     added_[t] = 1;
-    steps_.back().push_back(t);
+    steps_.triangles.push_back(t);
     queue_.push_back(t);
     for(int i = 0; i < 3; ++i) {
       int v = tris_[t].v[i];
@@ -138,12 +155,13 @@ private:
   }
 
   // The invariant kept between steps: no vertex of the triangles of a step
-  // is touched twice by the boundary of the grown shape.
-  bool step_is_pinch_free(const std::vector<int>& step) const
+  // (those from `first` on) is touched twice by the boundary of the grown
+  // shape.
+  bool step_is_pinch_free(int first) const
   {
-    for(int t : step)
+    for(std::size_t k = std::size_t(first); k < steps_.triangles.size(); ++k)
       for(int i = 0; i < 3; ++i)
-        if(runs_[tris_[t].v[i]] != 1) return false;
+        if(runs_[tris_[steps_.triangles[k]].v[i]] != 1) return false;
     return true;
   }
 
@@ -181,7 +199,7 @@ private:
   std::vector<int> runs_;
   std::vector<std::pair<int, int> > pinched_;
   std::deque<int> queue_;
-  std::vector<std::vector<int> > steps_;
+  Growth_steps steps_;
 };
 
 } // namespace internal

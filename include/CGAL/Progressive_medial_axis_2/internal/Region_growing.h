@@ -34,6 +34,55 @@ namespace CGAL {
 namespace Progressive_medial_axes {
 namespace internal {
 
+// The first point at the place of each point (empty if no two points share one).
+template <class Point>
+std::vector<int> growth_places(const std::vector<Point>& points)
+{
+  std::vector<int> order(points.size());
+  for(std::size_t i = 0; i < order.size(); ++i) order[i] = int(i);
+  std::sort(order.begin(), order.end(), [&](int a, int b) {
+    const Point &p = points[std::size_t(a)], &q = points[std::size_t(b)];
+    return p.x() < q.x() || (p.x() == q.x() && (p.y() < q.y() || (p.y() == q.y() && a < b)));
+  });
+  std::vector<int> place(points.size());
+  bool shared = false;
+  for(std::size_t k = 0; k < order.size(); ++k) {
+    const bool same = k > 0 && points[std::size_t(order[k])] == points[std::size_t(order[k - 1])];
+    place[std::size_t(order[k])] = same ? place[std::size_t(order[k - 1])] : order[k];
+    shared = shared || same;
+  }
+  if(!shared) place.clear();
+  return place;
+}
+
+// The triangle of largest area: the start of the growth.
+template <class Point>
+int largest_triangle(const std::vector<Triangle>& triangles, const std::vector<Point>& points)
+{
+  int start = 0;
+  double best = -1;
+  for(std::size_t t = 0; t < triangles.size(); ++t) {
+    const Triangle& T = triangles[t];
+    const double ax = CGAL::to_double(points[T.v[0]].x()), ay = CGAL::to_double(points[T.v[0]].y());
+    const double bx = CGAL::to_double(points[T.v[1]].x()), by = CGAL::to_double(points[T.v[1]].y());
+    const double cx = CGAL::to_double(points[T.v[2]].x()), cy = CGAL::to_double(points[T.v[2]].y());
+    const double area = (bx - ax) * (cy - ay) - (by - ay) * (cx - ax);
+    if(area > best) {
+      best = area;
+      start = int(t);
+    }
+  }
+  return start;
+}
+
+/// The triangles region growing adds at each step, from `triangles` (those
+/// of triangulate_rings()) of the polygon of `points`.
+template <class Point>
+Growth_steps growth_steps(const std::vector<Triangle>& triangles, const std::vector<Point>& points)
+{
+  return Growth_order(triangles, points.size(), largest_triangle(triangles, points), growth_places(points)).take_steps();
+}
+
 template <class Traits>
 class Region_growing
 {
@@ -46,19 +95,19 @@ public:
   {
     auto& data = engine.data();
     triangles_ = triangulate_rings<typename Traits::Kernel>(data);
-    steps_ = Growth_order(triangles_, data.points.size(), largest_triangle(), places(data.points)).steps();
+    steps_ = growth_steps(triangles_, data.points);
     added_.assign(triangles_.size(), 0);
     sides_.assign(triangles_.size(), std::array<int, 3>{{NO_INDEX, NO_INDEX, NO_INDEX}});
   }
 
   std::size_t number_of_triangles() const { return triangles_.size(); }
   /// Number of steps after step 0.
-  std::size_t number_of_steps() const { return steps_.empty() ? 0 : steps_.size() - 1; }
+  std::size_t number_of_steps() const { return steps_.size() == 0 ? 0 : steps_.size() - 1; }
 
   /// Builds step 0: the axis of the first triangle.
   void start()
   {
-    const int t = steps_[0][0];
+    const int t = *steps_.begin(0);
     const int none[3] = {NO_INDEX, NO_INDEX, NO_INDEX};
     sides_[t] = engine_.add_triangle(triangles_[t].v, none);
     added_[t] = 1;
@@ -72,7 +121,8 @@ public:
   std::size_t step(std::size_t k, Visitor& visitor)
   {
     std::size_t n_v = 0;
-    for(int t : steps_[k]) {
+    for(const int* it = steps_.begin(k); it != steps_.end(k); ++it) {
+      const int t = *it;
       const Triangle& T = triangles_[t];
       int shared[3], ns = 0;
       for(int e = 0; e < 3; ++e)
@@ -98,50 +148,9 @@ public:
   }
 
 private:
-  // The first point at the place of each point (empty if no two points share one).
-  template <class Point>
-  static std::vector<int> places(const std::vector<Point>& points)
-  {
-    std::vector<int> order(points.size());
-    for(std::size_t i = 0; i < order.size(); ++i) order[i] = int(i);
-    std::sort(order.begin(), order.end(), [&](int a, int b) {
-      const Point &p = points[std::size_t(a)], &q = points[std::size_t(b)];
-      return p.x() < q.x() || (p.x() == q.x() && (p.y() < q.y() || (p.y() == q.y() && a < b)));
-    });
-    std::vector<int> place(points.size());
-    bool shared = false;
-    for(std::size_t k = 0; k < order.size(); ++k) {
-      const bool same = k > 0 && points[std::size_t(order[k])] == points[std::size_t(order[k - 1])];
-      place[std::size_t(order[k])] = same ? place[std::size_t(order[k - 1])] : order[k];
-      shared = shared || same;
-    }
-    if(!shared) place.clear();
-    return place;
-  }
-
-  // The triangle of largest area: the start of the growth.
-  int largest_triangle() const
-  {
-    const auto& points = engine_.data().points;
-    int start = 0;
-    double best = -1;
-    for(std::size_t t = 0; t < triangles_.size(); ++t) {
-      const Triangle& T = triangles_[t];
-      const double ax = CGAL::to_double(points[T.v[0]].x()), ay = CGAL::to_double(points[T.v[0]].y());
-      const double bx = CGAL::to_double(points[T.v[1]].x()), by = CGAL::to_double(points[T.v[1]].y());
-      const double cx = CGAL::to_double(points[T.v[2]].x()), cy = CGAL::to_double(points[T.v[2]].y());
-      const double area = (bx - ax) * (cy - ay) - (by - ay) * (cx - ax);
-      if(area > best) {
-        best = area;
-        start = int(t);
-      }
-    }
-    return start;
-  }
-
   Engine& engine_;
   std::vector<Triangle> triangles_;
-  std::vector<std::vector<int> > steps_;   // triangles added by each step
+  Growth_steps steps_;   // triangles added by each step
   std::vector<char> added_;
   std::vector<std::array<int, 3> > sides_; // boundary half-edge of each side of each added triangle
 };
