@@ -184,13 +184,13 @@ void write_geojson(std::ostream& out, const std::vector<Axis_layer<Medial_axis> 
       out << (first ? "" : ",\n") << "{\"type\":\"Feature\",\"properties\":{" << inherited
           << "\"kind\":\"curve\",\"generators\":[\"" << a << "\",\"" << b << "\"],\"curve\":\""
           << (p.h.curve_kind() == Medial_axis::PARABOLIC_ARC ? "parabola" : "line")
-          << "\",\"length\":" << format_double(p.length()) << ",\"radius\":[" << number(p.h.radius_at(p.begin))
+          << "\",\"length\":" << Double_text(p.length()) << ",\"radius\":[" << number(p.h.radius_at(p.begin))
           << ',' << number(p.h.radius_at(p.whole ? p.h.length() : p.end)) << ']';
       if(p.with_et) out << ",\"et\":[" << number(p.et_begin) << ',' << number(p.et_end) << ']';
       out << "},\"geometry\":{\"type\":\"LineString\",\"coordinates\":[";
       auto pl = p.polyline(tol);
       for(std::size_t i = 0; i < pl.size(); ++i)
-        out << (i ? "," : "") << '[' << format_double(pl[i].first) << ',' << format_double(pl[i].second) << ']';
+        out << (i ? "," : "") << '[' << Double_text(pl[i].first) << ',' << Double_text(pl[i].second) << ']';
       out << "]}}";
       first = false;
     }
@@ -199,8 +199,8 @@ void write_geojson(std::ostream& out, const std::vector<Axis_layer<Medial_axis> 
           << "\"kind\":\"branch\",\"generators\":[";
       for(std::size_t i = 0; i < br.generators.size(); ++i)
         out << (i ? "," : "") << '"' << br.generators[i] << '"';
-      out << "],\"radius\":" << format_double(br.r) << "},\"geometry\":{\"type\":\"Point\",\"coordinates\":["
-          << format_double(br.x) << ',' << format_double(br.y) << "]}}";
+      out << "],\"radius\":" << Double_text(br.r) << "},\"geometry\":{\"type\":\"Point\",\"coordinates\":["
+          << Double_text(br.x) << ',' << Double_text(br.y) << "]}}";
       first = false;
     }
   }
@@ -217,7 +217,7 @@ inline void write_wkt_lines(std::ostream& out, const std::vector<std::vector<std
   for(const auto& pl : lines) {
     out << (first ? "(" : ", (");
     for(std::size_t i = 0; i < pl.size(); ++i)
-      out << (i ? ", " : "") << format_double(pl[i].first) << ' ' << format_double(pl[i].second);
+      out << (i ? ", " : "") << Double_text(pl[i].first) << ' ' << Double_text(pl[i].second);
     out << ')';
     first = false;
   }
