@@ -28,6 +28,7 @@
 #ifdef CGAL_LINKED_WITH_TBB
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
+#include <tbb/parallel_pipeline.h>
 #include <tbb/task_arena.h>
 #endif
 
@@ -1189,7 +1190,40 @@ int run(const Options& o)
   }
   if(!o.geojson.empty()) {
     std::ofstream f = open_out(o.geojson);
-    pma_tool::write_geojson(f, layers, o.tolerance);
+#ifdef CGAL_LINKED_WITH_TBB
+    if(layers.size() > 1 && threads > 1) {
+      // the polygons' features written on every thread, and put in the file
+      // in order (a whole-world file's GeoJSON is gigabytes: at most a few
+      // polygons' text at a time is held)
+      f << pma_tool::geojson_head;
+      bool first = true;
+      std::size_t next = 0;
+      in_arena([&]() {
+        tbb::parallel_pipeline(
+          std::size_t(4 * threads),
+          tbb::make_filter<void, std::size_t>(tbb::filter_mode::serial_in_order,
+                                              [&](tbb::flow_control& control) -> std::size_t {
+                                                if(next == layers.size()) control.stop();
+                                                return next++;
+                                              }) &
+            tbb::make_filter<std::size_t, std::string>(tbb::filter_mode::parallel,
+                                                       [&](std::size_t k) {
+                                                         std::ostringstream text;
+                                                         bool none = false;   // (each feature after ",\n")
+                                                         pma_tool::write_geojson_features(text, layers[k], o.tolerance, none);
+                                                         return text.str();
+                                                       }) &
+            tbb::make_filter<std::string, void>(tbb::filter_mode::serial_in_order, [&](const std::string& text) {
+              if(text.empty()) return;
+              const std::size_t skip = first ? 2 : 0;   // (the first feature's ",\n")
+              f.write(text.data() + skip, std::streamsize(text.size() - skip));
+              first = false;
+            }));
+      });
+      f << pma_tool::geojson_tail;
+    } else
+#endif
+      pma_tool::write_geojson(f, layers, o.tolerance);
   }
   if(!o.wkt_out.empty()) {
     std::ofstream f = open_out(o.wkt_out);

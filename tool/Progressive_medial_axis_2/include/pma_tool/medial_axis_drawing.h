@@ -146,6 +146,57 @@ void write_svg(std::ostream& out, const Medial_axis& ma, const std::string& titl
   write_svg(out, layers, title, width, show_input);
 }
 
+/// The features of one layer of write_geojson(), each after ",\n" unless
+/// `first` (which is then cleared): layers written apart (on several
+/// threads) and put together in order give write_geojson()'s text.
+template <class Medial_axis>
+void write_geojson_features(std::ostream& out, const Axis_layer<Medial_axis>& l, double tolerance, bool& first)
+{
+  auto number = [](double v) { return std::isfinite(v) ? format_double(v) : std::string("null"); };
+  const Medial_axis& ma = *l.ma;
+  const double tol = tolerance > 0 ? tolerance : 1e-6 * shape_box(ma).diagonal();
+  // the input feature's properties without the names of ours, as members to prepend
+  std::string inherited;
+  if(!l.properties.empty()) {
+    nlohmann::ordered_json props = nlohmann::ordered_json::parse(l.properties);
+    for(const char* own : {"kind", "generators", "curve", "length", "radius", "et", "polygon"}) props.erase(own);
+    if(!props.empty()) {
+      inherited = props.dump();
+      inherited = inherited.substr(1, inherited.size() - 2) + ",";
+    }
+  }
+  if(l.polygon >= 0) inherited += "\"polygon\":" + std::to_string(l.polygon) + ",";
+  for(const auto& p : l.parts) {
+    std::string a = l.names(p.h.first_generator()), b = l.names(p.h.second_generator());
+    if(b < a) std::swap(a, b);
+    out << (first ? "" : ",\n") << "{\"type\":\"Feature\",\"properties\":{" << inherited
+        << "\"kind\":\"curve\",\"generators\":[\"" << a << "\",\"" << b << "\"],\"curve\":\""
+        << (p.h.curve_kind() == Medial_axis::PARABOLIC_ARC ? "parabola" : "line")
+        << "\",\"length\":" << Double_text(p.length()) << ",\"radius\":[" << number(p.h.radius_at(p.begin))
+        << ',' << number(p.h.radius_at(p.whole ? p.h.length() : p.end)) << ']';
+    if(p.with_et) out << ",\"et\":[" << number(p.et_begin) << ',' << number(p.et_end) << ']';
+    out << "},\"geometry\":{\"type\":\"LineString\",\"coordinates\":[";
+    auto pl = p.polyline(tol);
+    for(std::size_t i = 0; i < pl.size(); ++i)
+      out << (i ? "," : "") << '[' << Double_text(pl[i].first) << ',' << Double_text(pl[i].second) << ']';
+    out << "]}}";
+    first = false;
+  }
+  for(const auto& br : named_branches(ma, l.names, 1e-12 * shape_box(ma).diagonal(), l.keep)) {
+    out << (first ? "" : ",\n") << "{\"type\":\"Feature\",\"properties\":{" << inherited
+        << "\"kind\":\"branch\",\"generators\":[";
+    for(std::size_t i = 0; i < br.generators.size(); ++i)
+      out << (i ? "," : "") << '"' << br.generators[i] << '"';
+    out << "],\"radius\":" << Double_text(br.r) << "},\"geometry\":{\"type\":\"Point\",\"coordinates\":["
+        << Double_text(br.x) << ',' << Double_text(br.y) << "]}}";
+    first = false;
+  }
+}
+
+/// The text before and after the features of write_geojson().
+constexpr const char* geojson_head = "{\"type\":\"FeatureCollection\",\"features\":[\n";
+constexpr const char* geojson_tail = "\n]}\n";
+
 /*!
 Writes the curves of the layers' medial axes as a GeoJSON FeatureCollection
 (RFC 7946): one LineString per curve, sampled within `tolerance` (default
@@ -161,50 +212,10 @@ has several.
 template <class Medial_axis>
 void write_geojson(std::ostream& out, const std::vector<Axis_layer<Medial_axis> >& layers, double tolerance = -1)
 {
-  auto number = [](double v) { return std::isfinite(v) ? format_double(v) : std::string("null"); };
-  out << "{\"type\":\"FeatureCollection\",\"features\":[\n";
+  out << geojson_head;
   bool first = true;
-  for(const auto& l : layers) {
-    const Medial_axis& ma = *l.ma;
-    const double tol = tolerance > 0 ? tolerance : 1e-6 * shape_box(ma).diagonal();
-    // the input feature's properties without the names of ours, as members to prepend
-    std::string inherited;
-    if(!l.properties.empty()) {
-      nlohmann::ordered_json props = nlohmann::ordered_json::parse(l.properties);
-      for(const char* own : {"kind", "generators", "curve", "length", "radius", "et", "polygon"}) props.erase(own);
-      if(!props.empty()) {
-        inherited = props.dump();
-        inherited = inherited.substr(1, inherited.size() - 2) + ",";
-      }
-    }
-    if(l.polygon >= 0) inherited += "\"polygon\":" + std::to_string(l.polygon) + ",";
-    for(const auto& p : l.parts) {
-      std::string a = l.names(p.h.first_generator()), b = l.names(p.h.second_generator());
-      if(b < a) std::swap(a, b);
-      out << (first ? "" : ",\n") << "{\"type\":\"Feature\",\"properties\":{" << inherited
-          << "\"kind\":\"curve\",\"generators\":[\"" << a << "\",\"" << b << "\"],\"curve\":\""
-          << (p.h.curve_kind() == Medial_axis::PARABOLIC_ARC ? "parabola" : "line")
-          << "\",\"length\":" << Double_text(p.length()) << ",\"radius\":[" << number(p.h.radius_at(p.begin))
-          << ',' << number(p.h.radius_at(p.whole ? p.h.length() : p.end)) << ']';
-      if(p.with_et) out << ",\"et\":[" << number(p.et_begin) << ',' << number(p.et_end) << ']';
-      out << "},\"geometry\":{\"type\":\"LineString\",\"coordinates\":[";
-      auto pl = p.polyline(tol);
-      for(std::size_t i = 0; i < pl.size(); ++i)
-        out << (i ? "," : "") << '[' << Double_text(pl[i].first) << ',' << Double_text(pl[i].second) << ']';
-      out << "]}}";
-      first = false;
-    }
-    for(const auto& br : named_branches(ma, l.names, 1e-12 * shape_box(ma).diagonal(), l.keep)) {
-      out << (first ? "" : ",\n") << "{\"type\":\"Feature\",\"properties\":{" << inherited
-          << "\"kind\":\"branch\",\"generators\":[";
-      for(std::size_t i = 0; i < br.generators.size(); ++i)
-        out << (i ? "," : "") << '"' << br.generators[i] << '"';
-      out << "],\"radius\":" << Double_text(br.r) << "},\"geometry\":{\"type\":\"Point\",\"coordinates\":["
-          << Double_text(br.x) << ',' << Double_text(br.y) << "]}}";
-      first = false;
-    }
-  }
-  out << "\n]}\n";
+  for(const auto& l : layers) write_geojson_features(out, l, tolerance, first);
+  out << geojson_tail;
 }
 
 /// Writes polylines as one WKT MULTILINESTRING.
