@@ -702,27 +702,25 @@ one_shot_medial_axis(const std::vector<std::vector<typename Traits::Kernel::Poin
 
   t0 = std::chrono::steady_clock::now();
   std::vector<Triangle> triangles;
-  double counting_seconds = 0;   // (one_shots_count_region_growing_steps())
   if(split && split->finish(*data, triangles)) {
     stats.split_triangulations = 1;
     stats.split_triangulation_holes = split->holes_on_cut();
     stats.triangulation_parallel_seconds = split->parallel_seconds();
   } else {   // (where the sides could not be finished, the whole polygon from its points)
     triangles = triangulation->finish(*data);
-    // (the triangles of region growing: triangulate_rings() of the same
-    // points; the count is not part of the triangulation's time)
-    if(one_shots_count_region_growing_steps().load(std::memory_order_relaxed) && !triangles.empty()) {
-      const auto t1 = std::chrono::steady_clock::now();
-      stats.region_growing_steps = growth_steps(triangles, data->points).size() - 1;
-      counting_seconds = seconds_since(t1);
-    }
   }
   // (the memory they free is given back to the system once the divide and
   // conquer has prepared its parts: see Divide_and_conquer::run())
   split.reset();
   triangulation.reset();
   stats.triangles = triangles.size();
-  stats.triangulation_seconds = stats.overlapped_seconds + split_seconds + seconds_since(t0) - counting_seconds;
+  stats.triangulation_seconds = stats.overlapped_seconds + split_seconds + seconds_since(t0);
+  // the steps of region growing, whose triangles are these unless split
+  // (triangulate_rings() of the same points), counted once the
+  // triangulation is freed
+  if(stats.split_triangulations == 0 && !triangles.empty() &&
+     one_shots_count_region_growing_steps().load(std::memory_order_relaxed))
+    stats.region_growing_steps = growth_steps(triangles, data->points).size() - 1;
 
   t0 = std::chrono::steady_clock::now();
   Engine engine(*data, traits);

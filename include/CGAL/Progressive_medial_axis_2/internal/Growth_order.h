@@ -109,10 +109,8 @@ public:
     steps_.start.push_back(int(steps_.triangles.size()));
   }
 
-  /// The steps: step 0 holds the first triangle; each later step holds the
-  /// triangles it adds, in the order they are merged.
-  const Growth_steps& steps() const { return steps_; }
-  /// The same, moved out.
+  /// The steps, moved out: step 0 holds the first triangle; each later step
+  /// holds the triangles it adds, in the order they are merged.
   Growth_steps take_steps() { return std::move(steps_); }
 
 private:
