@@ -23,6 +23,7 @@
 #include <fstream>
 #include <functional>
 #include <map>
+#include <set>
 #include <iostream>
 #include <sstream>
 #include <string>
@@ -507,10 +508,64 @@ void several_polygons(const std::string& data)
   std::string multi = "MULTIPOLYGON (" + polygon_text(files[0]) + ", " + polygon_text(files[1]) + ")";
   std::ofstream(tmp + "/multi.wkt") << "GEOMETRYCOLLECTION (" << multi << ", POLYGON EMPTY, POLYGON " << polygon_text(files[2])
                                     << ", POLYGON " << polygon_text(files[3]) << ")\n";
-  Result ours = run(tool + " --pairs --stats --inscribed-circle --threads 2 " + tmp + "/multi.wkt");
+  Result ours = run(tool + " --pairs --stats --inscribed-circle --threads 2 --geojson " + tmp + "/multi2.geojson " + tmp +
+                   "/multi.wkt");
   CHECK(ours.status == 0, "several polygons: exit status " << ours.status << ": " << ours.err);
   CHECK(ours.out.find("\npolygons 4\n") != std::string::npos, "several polygons: --stats has no 'polygons 4'");
-  Result one = run(tool + " --pairs --stats --inscribed-circle --threads 1 " + tmp + "/multi.wkt");
+  Result one = run(tool + " --pairs --stats --inscribed-circle --threads 1 --geojson " + tmp + "/multi1.geojson " + tmp +
+                   "/multi.wkt");
+  // The GeoJSON of several polygons on two threads (formatted on every
+  // thread, written in order) against the one of one thread (written by
+  // one writer): the polygons in input order, each with the same features.
+  // The parts of a one-shot depend on the threads, so a polygon's features
+  // may come in another order, and a curve in the other direction (its
+  // points between the ends and its length computed from the other end):
+  // a curve is compared by its generators, kind, and its ends with their
+  // radii (the vertices' own), a branch point whole.  Every curve's end at
+  // a branch point has the branch point's radius.
+  try {
+    std::vector<std::multiset<std::string> > features[2];
+    for(int t = 0; t < 2; ++t) {
+      long last = -1;
+      std::map<std::string, std::string> branch_radius, end_radius;   // by the point's coordinates
+      const auto doc = nlohmann::json::parse(slurp(tmp + (t ? "/multi2.geojson" : "/multi1.geojson")));
+      for(const auto& f : doc.at("features")) {
+        const auto& pr = f.at("properties");
+        const long k = pr.at("polygon").get<long>();
+        CHECK(k >= last && k < 4, "several polygons, GeoJSON on " << t + 1 << " threads: polygon " << k << " after " << last);
+        if(k < last || k >= 4) break;
+        last = k;
+        features[t].resize(std::size_t(k) + 1);
+        const auto& xy = f.at("geometry").at("coordinates");
+        if(pr.at("kind") == "branch") {
+          features[t][std::size_t(k)].insert(f.dump());
+          branch_radius[std::to_string(k) + xy.dump()] = pr.at("radius").dump();
+          continue;
+        }
+        std::string ends[2];
+        for(int e = 0; e < 2; ++e) {
+          const auto& end = e ? xy.back() : xy.front();
+          ends[e] = end.dump() + " " + pr.at("radius")[std::size_t(e)].dump();
+          end_radius[std::to_string(k) + end.dump()] = pr.at("radius")[std::size_t(e)].dump();
+        }
+        if(ends[1] < ends[0]) std::swap(ends[0], ends[1]);
+        features[t][std::size_t(k)].insert(pr.at("generators").dump() + pr.at("curve").dump() + ends[0] + ends[1]);
+      }
+      std::size_t checked = 0;
+      for(const auto& b : branch_radius) {
+        const auto e = end_radius.find(b.first);
+        CHECK(e != end_radius.end() && e->second == b.second,
+              "several polygons, GeoJSON: branch point " << b.first << " of radius " << b.second << ", a curve's end there "
+              << (e == end_radius.end() ? std::string("none") : e->second));
+        ++checked;
+      }
+      CHECK(checked > 100, "several polygons, GeoJSON: " << checked << " branch points");
+    }
+    CHECK(features[0].size() == 4 && features[0] == features[1],
+          "several polygons: the GeoJSON features on one and two threads differ");
+  } catch(const std::exception& e) {
+    CHECK(false, "several polygons, GeoJSON: " << e.what());
+  }
   auto without_times = [](const std::string& out) {
     std::istringstream in(out);
     std::string line, kept;
@@ -550,6 +605,13 @@ void several_polygons(const std::string& data)
      "geometry": {"type": "Polygon", "coordinates": [[[20, 0], [22, 0], [21, 1], [20, 0]]]}}]})";
   Result g = run(tool + " --pairs --geojson " + tmp + "/fc_axis.geojson " + tmp + "/fc.geojson");
   CHECK(g.status == 0, "FeatureCollection: exit status " << g.status << ": " << g.err);
+  // (polygons this small are one part each: their features come in one
+  // order, and the file of two threads is the one writer's byte for byte)
+  for(int t = 1; t <= 2; ++t)
+    run(tool + " --threads " + std::to_string(t) + " --geojson " + tmp + "/fc_axis" + std::to_string(t) + ".geojson " + tmp +
+        "/fc.geojson");
+  CHECK(!slurp(tmp + "/fc_axis1.geojson").empty() && slurp(tmp + "/fc_axis1.geojson") == slurp(tmp + "/fc_axis2.geojson"),
+        "FeatureCollection: the GeoJSON of one and two threads differ");
   CHECK(count_lines(g.err) == 1 && g.err.find("warning: " + tmp + "/fc.geojson: skipped 2 point and line geometries") !=
                                        std::string::npos && g.err.find("(the first: Point in feature 2)") != std::string::npos,
         "FeatureCollection: the skipped point and line: " << g.err);
@@ -861,6 +923,13 @@ void split_along_holes()
   CHECK(two.status == 0 && stats_value(two.out, "triangulation_split") == "1" && !holes.empty() && std::stol(holes) > 0,
         f << " on two threads: triangulation_split " << stats_value(two.out, "triangulation_split")
           << ", triangulation_split_holes " << holes);
+  // (the one-shot's triangles are not region growing's: `steps` counted
+  // from a triangulation of the rings rebuilt from the axis)
+  Result step = run(tool + " --stats --step 0 " + f);
+  CHECK(step.status == 0 && !stats_value(two.out, "steps").empty() &&
+          stats_value(two.out, "steps") == stats_value(step.out, "steps"),
+        f << ": steps " << stats_value(two.out, "steps") << " in one shot on two threads, "
+          << stats_value(step.out, "steps") << " at --step 0");
   Result p1 = run(tool + " --threads 1 --pairs --branches " + f), p2 = run(tool + " --threads 2 --pairs --branches " + f);
   CHECK(p1.status == 0 && p2.status == 0 && !p1.out.empty() && p1.out == p2.out,
         f << ": the pairs and branch points on one and two threads differ");

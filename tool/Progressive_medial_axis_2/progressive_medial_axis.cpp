@@ -556,6 +556,19 @@ void add_statistics(CGAL::Progressive_medial_axis_statistics& s, const CGAL::Pro
   s.abandoned_divide_and_conquers += t.abandoned_divide_and_conquers;
 }
 
+// The input rings of a one-shot's polygon, rebuilt from its axis (for the
+// one-shots that were given their rings)
+template <class Kernel>
+std::vector<std::vector<typename Kernel::Point_2> > axis_rings(const CGAL::Medial_axis_2<Kernel>& ma)
+{
+  std::vector<std::vector<typename Kernel::Point_2> > rings(ma.number_of_input_rings());
+  for(std::size_t r = 0; r < rings.size(); ++r) {
+    rings[r].reserve(ma.input_ring_size(r));
+    for(std::size_t i = 0; i < ma.input_ring_size(r); ++i) rings[r].push_back(ma.point({int(r), int(i)}));
+  }
+  return rings;
+}
+
 // One polygon of the input, its axis and what is computed from it.
 template <class Traits>
 struct Polygon_job {
@@ -766,17 +779,21 @@ int run(const Options& o)
 #endif
     for(std::size_t k : order) f(k);
   };
-  // the polygons, largest first
-  auto largest_first = [](const auto& polygons) {
-    std::vector<std::size_t> order(polygons.size());
+  // the number of vertices of each polygon
+  auto vertex_counts = [](const auto& polygons) {
     std::vector<std::size_t> size(polygons.size(), 0);
-    for(std::size_t k = 0; k < order.size(); ++k) {
-      order[k] = k;
+    for(std::size_t k = 0; k < size.size(); ++k)
       for(const auto& r : polygons[k].rings) size[k] += r.size();
-    }
+    return size;
+  };
+  // the polygons of these numbers of vertices, largest first
+  auto largest_of = [](const std::vector<std::size_t>& size) {
+    std::vector<std::size_t> order(size.size());
+    for(std::size_t k = 0; k < order.size(); ++k) order[k] = k;
     std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return size[a] > size[b]; });
     return order;
   };
+  auto largest_first = [&](const auto& polygons) { return largest_of(vertex_counts(polygons)); };
   auto validate = [](const auto& rings, std::string& error) {
     const auto tv = std::chrono::steady_clock::now();
     try {
@@ -816,6 +833,7 @@ int run(const Options& o)
 #endif
   std::vector<std::string> errors(input.size());
   std::vector<double> validation_seconds(input.size(), 0);
+  std::vector<std::size_t> input_vertices;   // of each polygon (after repair)
   // With --repair, each polygon is checked and repaired in one task, and in a
   // one-shot run also computed there, so that the repair of a large polygon
   // runs while the other polygons are computed; the polygons after repair
@@ -857,6 +875,7 @@ int run(const Options& o)
     // valid), and with repair_in_tasks their axes and statistics
     struct Part {
       Polygon polygon;
+      std::size_t vertices = 0;
       Medial_axis axis;
       CGAL::Progressive_medial_axis_statistics stats;
     };
@@ -884,9 +903,14 @@ int run(const Options& o)
           }
           repair_seconds[k] = std::chrono::duration<double>(std::chrono::steady_clock::now() - tr).count();
         }
+        for(Part& part : parts[k])
+          for(const auto& r : part.polygon.rings) part.vertices += r.size();
         if(repair_in_tasks && repair_errors[k].empty()) {
           for(Part& part : parts[k]) {
-            repair_errors[k] = one_shot(part.polygon.rings, CGAL::TRUST_INPUT, part.axis, part.stats);
+            // (the rings given up, as below, unless --repaired-out writes them)
+            repair_errors[k] = o.repaired_out.empty()
+                                 ? one_shot(std::move(part.polygon.rings), CGAL::TRUST_INPUT, part.axis, part.stats)
+                                 : one_shot(part.polygon.rings, CGAL::TRUST_INPUT, part.axis, part.stats);
             if(!repair_errors[k].empty()) break;
           }
         }
@@ -896,6 +920,7 @@ int run(const Options& o)
     if constexpr(!std::is_empty<Counters>::value) counters.gather();
     if(report(repair_errors, "after repair: ")) return 2;
     std::vector<Polygon> out;
+    std::vector<std::size_t> out_vertices;
     std::vector<double> seconds;   // of the checks of the valid input polygons
     // (reserved: grown by doubling, these vectors and the layers of the
     // outputs were about 27 MB more of the peak of a file of 72,000
@@ -903,6 +928,7 @@ int run(const Options& o)
     std::size_t outputs = 0;
     for(const auto& p : parts) outputs += p.size();
     out.reserve(outputs);
+    out_vertices.reserve(outputs);
     seconds.reserve(outputs);
     if(repair_in_tasks) {
       repaired_axes.reserve(outputs);
@@ -913,6 +939,7 @@ int run(const Options& o)
       repairs.seconds += repair_seconds[k];
       for(Part& part : parts[k]) {
         out.push_back(std::move(part.polygon));
+        out_vertices.push_back(part.vertices);
         seconds.push_back(errors[k].empty() ? validation_seconds[k] : 0);
         if(repair_in_tasks) {
           repaired_axes.push_back(std::move(part.axis));
@@ -925,6 +952,7 @@ int run(const Options& o)
       return 2;
     }
     input = std::move(out);
+    input_vertices = std::move(out_vertices);
     validation_seconds = std::move(seconds);
     repairs.output_polygons = input.size();
   } else if(report(errors, "")) {
@@ -946,7 +974,10 @@ int run(const Options& o)
     if(multi) jobs[k].prefix = "p" + std::to_string(k) + ":";
   }
   // the order in which the polygons (after repair) are given to the threads
-  const std::vector<std::size_t> jobs_largest_first = largest_first(input);
+  // (by their numbers of vertices: the one-shots of the repairs gave their
+  // rings up)
+  if(!o.repair) input_vertices = vertex_counts(input);
+  const std::vector<std::size_t> jobs_largest_first = largest_of(input_vertices);
 
   if(multi && (progressive || !o.shape_out.empty()))
     usage_error("--step, --frames, --html, --progressive and --shape-out need one polygon; " + o.input + " has " +
@@ -1009,10 +1040,9 @@ int run(const Options& o)
         Job& job = jobs[k];
         const auto checking = check_in_one_shot ? CGAL::CHECK_INPUT : CGAL::TRUST_INPUT;
         // The rings are given up to the one-shot, which gives their memory
-        // back once it has copied the points, unless --stats counts the
-        // steps of region growing from them afterwards.
-        errors[k] = o.stats ? one_shot(input[k].rings, checking, job.one_shot, job.stats)
-                            : one_shot(std::move(input[k].rings), checking, job.one_shot, job.stats);
+        // back once it has copied the points (--stats rebuilds them from
+        // the axis where it counts the steps of region growing apart).
+        errors[k] = one_shot(std::move(input[k].rings), checking, job.one_shot, job.stats);
         if(errors[k].empty()) {
           if(!check_in_one_shot) job.stats.validation_seconds = job.validation_seconds;
           job.ma = &job.one_shot;
@@ -1123,7 +1153,8 @@ int run(const Options& o)
       for_each_polygon(jobs_largest_first, [&](std::size_t k) {
         // (counted by the one-shot where its triangles are region growing's)
         const auto& counted = jobs[k].stats.region_growing_steps;
-        jobs[k].steps = counted ? *counted : PMA(jobs[k].input->rings, Traits(), CGAL::TRUST_INPUT).number_of_steps();
+        if(!jobs[k].ma) return;
+        jobs[k].steps = counted ? *counted : PMA(axis_rings(*jobs[k].ma), Traits(), CGAL::TRUST_INPUT).number_of_steps();
       });
     });
     restore_filter_counters<Traits>(filters, 0);

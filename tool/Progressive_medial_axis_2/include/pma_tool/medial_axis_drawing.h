@@ -172,8 +172,8 @@ void write_geojson_features(std::ostream& out, const Axis_layer<Medial_axis>& l,
     out << (first ? "" : ",\n") << "{\"type\":\"Feature\",\"properties\":{" << inherited
         << "\"kind\":\"curve\",\"generators\":[\"" << a << "\",\"" << b << "\"],\"curve\":\""
         << (p.h.curve_kind() == Medial_axis::PARABOLIC_ARC ? "parabola" : "line")
-        << "\",\"length\":" << Double_text(p.length()) << ",\"radius\":[" << number(p.h.radius_at(p.begin))
-        << ',' << number(p.h.radius_at(p.whole ? p.h.length() : p.end)) << ']';
+        << "\",\"length\":" << Double_text(p.length()) << ",\"radius\":[" << number(p.radius_at_begin())
+        << ',' << number(p.radius_at_end()) << ']';
     if(p.with_et) out << ",\"et\":[" << number(p.et_begin) << ',' << number(p.et_end) << ']';
     out << "},\"geometry\":{\"type\":\"LineString\",\"coordinates\":[";
     auto pl = p.polyline(tol);

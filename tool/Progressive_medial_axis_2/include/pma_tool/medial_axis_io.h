@@ -104,9 +104,22 @@ struct Axis_part {
   typename Medial_axis::Halfedge_handle h;
   double begin = 0, end = 0;
   bool whole = true;
+  bool cut_begin = false, cut_end = false;   // (by a pruning)
   bool with_et = false;
   double et_begin = 0, et_end = 0;
   double length() const { return whole ? h.length() : end - begin; }
+  /// The radius at the start and at the end: at an end that is a vertex of
+  /// the axis, the vertex's (correctly rounded with exact decisions), not
+  /// the distance from a point of the curve computed in double, which
+  /// differs from it in the last bits and with the direction of the curve.
+  double radius_at_begin() const
+  {
+    return cut_begin ? h.radius_at(begin) : CGAL::to_double(h.source().radius());
+  }
+  double radius_at_end() const
+  {
+    return cut_end ? h.radius_at(end) : CGAL::to_double(h.target().radius());
+  }
   std::vector<std::pair<double, double> > polyline(double tolerance) const
   {
     return whole ? h.polyline(tolerance) : h.polyline(tolerance, begin, end);
@@ -140,7 +153,9 @@ std::vector<Axis_part<CGAL::Medial_axis_2<K> > > axis_parts(const CGAL::Pruned_m
     p.h = c.halfedge;
     p.begin = c.begin;
     p.end = c.end;
-    p.whole = !c.cut_at_begin() && !c.cut_at_end();
+    p.cut_begin = c.cut_at_begin();
+    p.cut_end = c.cut_at_end();
+    p.whole = !p.cut_begin && !p.cut_end;
     p.with_et = true;
     p.et_begin = c.et_begin;
     p.et_end = c.et_end;
