@@ -1192,15 +1192,20 @@ int run(const Options& o)
     const Job& job = jobs[k];
     pma_tool::Axis_layer<Medial_axis> layer;
     layer.ma = job.ma;
-    // the curves, for the outputs that list them (a plain run does not pay for them)
-    if(o.pairs || !o.svg.empty() || !o.geojson.empty() || !o.wkt_out.empty())
-      layer.parts = o.prune ? pma_tool::axis_parts(*job.pruned) : pma_tool::axis_parts(*job.ma);
     if(o.prune) layer.keep = [p = job.pruned.get()](const Vertex& v) { return p->is_kept(v); };
     layer.names = pma_tool::prefixed_names(Names(*job.ma, shape_mode ? Names::SHAPE : Names::INPUT), job.prefix);
     layer.properties = job.input->properties;
     layer.polygon = multi ? long(k) : -1;
     layers.push_back(std::move(layer));
   }
+  // the curves, for the outputs that list them (a plain run does not pay
+  // for them), sorted (axis_parts()) on every thread
+  if(o.pairs || !o.svg.empty() || !o.geojson.empty() || !o.wkt_out.empty())
+    in_arena([&]() {
+      for_each_polygon(jobs_largest_first, [&](std::size_t k) {
+        layers[k].parts = o.prune ? pma_tool::axis_parts(*jobs[k].pruned) : pma_tool::axis_parts(*jobs[k].ma);
+      });
+    });
 
   if(o.pairs)
     for(const auto& l : layers) pma_tool::write_pairs(std::cout, pma_tool::named_curves(l.parts, l.names));

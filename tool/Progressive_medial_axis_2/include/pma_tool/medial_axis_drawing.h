@@ -120,13 +120,18 @@ void write_svg(std::ostream& out, const std::vector<Axis_layer<Medial_axis> >& l
     out << "\"/>\n";
   }
   out << "<g fill=\"#202020\">\n";
-  for(const auto& l : layers)
-    for(const auto& v : l.ma->vertices()) {
-      if(v.kind() != Medial_axis::BRANCH_POINT || (l.keep && !l.keep(v))) continue;
-      auto p = Medial_axis::to_xy(v.point());
+  for(const auto& l : layers) {
+    // (sorted, as the curves are: the same picture on any number of threads
+    // is the same bytes)
+    std::vector<std::pair<double, double> > points;
+    for(const auto& v : l.ma->vertices())
+      if(v.kind() == Medial_axis::BRANCH_POINT && (!l.keep || l.keep(v))) points.push_back(Medial_axis::to_xy(v.point()));
+    std::sort(points.begin(), points.end());
+    for(const auto& p : points) {
       std::snprintf(buf, sizeof(buf), "<circle cx=\"%.2f\" cy=\"%.2f\" r=\"1.2\"/>\n", X(p.first), Y(p.second));
       out << buf;
     }
+  }
   out << "</g>\n";
   if(!title.empty())
     out << "<text x=\"" << margin << "\" y=\"" << H - margin / 2

@@ -127,16 +127,52 @@ struct Axis_part {
   std::array<std::pair<double, double>, 3> bezier() const { return h.quadratic_bezier(begin, end); }
 };
 
-/// Every medial curve of `ma`, whole.
+/// Every medial curve of `ma`, whole, in an order and a direction that
+/// depend on the axis alone, not on how it was computed (the parts of a
+/// one-shot, so the number of threads, decide which half-edge of a curve
+/// the structure lists, and where): each curve from its end of smaller
+/// (x, y), sorted by its generators (ring, index, point or edge), then by
+/// its ends.  So the outputs of one input are the same bytes on any
+/// number of threads.
 template <class Medial_axis>
 std::vector<Axis_part<Medial_axis> > axis_parts(const Medial_axis& ma)
 {
-  std::vector<Axis_part<Medial_axis> > out;
-  out.reserve(ma.number_of_edges());   // (a vector grown by doubling holds up to 3 times the curves)
+  struct Keyed {
+    std::array<int, 6> generators;
+    std::array<double, 4> ends;
+    typename Medial_axis::Halfedge_handle h;
+  };
+  auto generator_key = [](const typename Medial_axis::Face_handle& f, int* key) {
+    const auto v = f.source_vertex();
+    key[0] = v.ring;
+    key[1] = v.index;
+    key[2] = f.is_point() ? 1 : 0;
+  };
+  std::vector<Keyed> keyed;
+  keyed.reserve(ma.number_of_edges());   // (a vector grown by doubling holds up to 3 times the curves)
   for(const auto& e : ma.edges()) {
+    Keyed k;
+    const auto c = e.geometry();   // (its ends without the vertices' handles, which look for zero-length curves)
+    const auto a = c.a, b = c.b;
+    k.h = b < a ? e.opposite() : e;
+    k.ends = b < a ? std::array<double, 4>{{b.first, b.second, a.first, a.second}}
+                   : std::array<double, 4>{{a.first, a.second, b.first, b.second}};
+    generator_key(e.first_generator(), &k.generators[0]);
+    generator_key(e.second_generator(), &k.generators[3]);
+    if(std::lexicographical_compare(k.generators.begin() + 3, k.generators.end(), k.generators.begin(),
+                                    k.generators.begin() + 3))
+      std::swap_ranges(k.generators.begin(), k.generators.begin() + 3, k.generators.begin() + 3);
+    keyed.push_back(k);
+  }
+  std::sort(keyed.begin(), keyed.end(), [](const Keyed& x, const Keyed& y) {
+    return x.generators != y.generators ? x.generators < y.generators : x.ends < y.ends;
+  });
+  std::vector<Axis_part<Medial_axis> > out;
+  out.reserve(keyed.size());
+  for(const Keyed& k : keyed) {
     Axis_part<Medial_axis> p;
-    p.h = e;
-    p.end = e.length();
+    p.h = k.h;
+    p.end = k.h.length();
     out.push_back(p);
   }
   return out;
