@@ -130,49 +130,52 @@ struct Axis_part {
 /// Every medial curve of `ma`, whole, in an order and a direction that
 /// depend on the axis alone, not on how it was computed (the parts of a
 /// one-shot, so the number of threads, decide which half-edge of a curve
-/// the structure lists, and where): each curve from its end of smaller
-/// (x, y), sorted by its generators (ring, index, point or edge), then by
-/// its ends.  So the outputs of one input are the same bytes on any
+/// the structure lists, and where): each curve directed with the smaller
+/// of its two generators (by ring, index, point or edge) on its left,
+/// sorted by its generators, and the curves of the same two generators by
+/// their ends.  So the outputs of one input are the same bytes on any
 /// number of threads.
 template <class Medial_axis>
 std::vector<Axis_part<Medial_axis> > axis_parts(const Medial_axis& ma)
 {
-  struct Keyed {
-    std::array<int, 6> generators;
-    std::array<double, 4> ends;
-    typename Medial_axis::Halfedge_handle h;
-  };
+  typedef std::array<int, 6> Generators;
   auto generator_key = [](const typename Medial_axis::Face_handle& f, int* key) {
     const auto v = f.source_vertex();
     key[0] = v.ring;
     key[1] = v.index;
     key[2] = f.is_point() ? 1 : 0;
   };
-  std::vector<Keyed> keyed;
+  std::vector<std::pair<Generators, typename Medial_axis::Halfedge_handle> > keyed;
   keyed.reserve(ma.number_of_edges());   // (a vector grown by doubling holds up to 3 times the curves)
   for(const auto& e : ma.edges()) {
-    Keyed k;
-    const auto c = e.geometry();   // (its ends without the vertices' handles, which look for zero-length curves)
-    const auto a = c.a, b = c.b;
-    k.h = b < a ? e.opposite() : e;
-    k.ends = b < a ? std::array<double, 4>{{b.first, b.second, a.first, a.second}}
-                   : std::array<double, 4>{{a.first, a.second, b.first, b.second}};
-    generator_key(e.first_generator(), &k.generators[0]);
-    generator_key(e.second_generator(), &k.generators[3]);
-    if(std::lexicographical_compare(k.generators.begin() + 3, k.generators.end(), k.generators.begin(),
-                                    k.generators.begin() + 3))
-      std::swap_ranges(k.generators.begin(), k.generators.begin() + 3, k.generators.begin() + 3);
-    keyed.push_back(k);
+    Generators g;
+    generator_key(e.first_generator(), &g[0]);
+    generator_key(e.second_generator(), &g[3]);
+    if(std::lexicographical_compare(g.begin() + 3, g.end(), g.begin(), g.begin() + 3)) {
+      std::swap_ranges(g.begin(), g.begin() + 3, g.begin() + 3);
+      keyed.emplace_back(g, e.opposite());
+    } else {
+      keyed.emplace_back(g, e);
+    }
   }
-  std::sort(keyed.begin(), keyed.end(), [](const Keyed& x, const Keyed& y) {
-    return x.generators != y.generators ? x.generators < y.generators : x.ends < y.ends;
-  });
+  std::sort(keyed.begin(), keyed.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
+  // (two generators may share several curves: those in the order of their ends)
+  for(std::size_t i = 0; i < keyed.size();) {
+    std::size_t j = i + 1;
+    while(j < keyed.size() && keyed[j].first == keyed[i].first) ++j;
+    if(j - i > 1)
+      std::sort(keyed.begin() + std::ptrdiff_t(i), keyed.begin() + std::ptrdiff_t(j), [](const auto& x, const auto& y) {
+        const auto a = x.second.geometry(), b = y.second.geometry();
+        return std::make_pair(a.a, a.b) < std::make_pair(b.a, b.b);
+      });
+    i = j;
+  }
   std::vector<Axis_part<Medial_axis> > out;
   out.reserve(keyed.size());
-  for(const Keyed& k : keyed) {
+  for(const auto& k : keyed) {
     Axis_part<Medial_axis> p;
-    p.h = k.h;
-    p.end = k.h.length();
+    p.h = k.second;
+    p.end = k.second.length();
     out.push_back(p);
   }
   return out;
