@@ -131,32 +131,37 @@ struct Axis_part {
 /// depend on the axis alone, not on how it was computed (the parts of a
 /// one-shot, so the number of threads, decide which half-edge of a curve
 /// the structure lists, and where): each curve directed with the smaller
-/// of its two generators (by ring, index, point or edge) on its left,
-/// sorted by its generators, and the curves of the same two generators by
-/// their ends.  So the outputs of one input are the same bytes on any
-/// number of threads.
+/// of its two generators on its left, sorted by its generators, and the
+/// curves of the same two generators by their ends.  So the outputs of one
+/// input are the same bytes on any number of threads, where the axis is
+/// (with exact decisions: its vertices correctly rounded).  A generator's
+/// key is point or edge, then its first and its last input vertex: where a
+/// vertex lies inside an edge, the part of the edge from there starts at
+/// that vertex, as the vertex's own edge does, and ends elsewhere.  (Two
+/// generators of one key, which no valid polygon has, would have their
+/// curve directed from its end of smaller (x, y).)
 template <class Medial_axis>
 std::vector<Axis_part<Medial_axis> > axis_parts(const Medial_axis& ma)
 {
-  typedef std::array<int, 6> Generators;
-  auto generator_key = [](const typename Medial_axis::Face_handle& f, int* key) {
-    const auto v = f.source_vertex();
-    key[0] = v.ring;
-    key[1] = v.index;
-    key[2] = f.is_point() ? 1 : 0;
+  typedef std::array<int, 5> Key;
+  typedef std::array<int, 10> Generators;
+  auto generator_key = [](const typename Medial_axis::Face_handle& f) {
+    const auto a = f.source_vertex(), b = f.target_vertex();
+    return Key{{f.is_point() ? 1 : 0, a.ring, a.index, b.ring, b.index}};
   };
   std::vector<std::pair<Generators, typename Medial_axis::Halfedge_handle> > keyed;
   keyed.reserve(ma.number_of_edges());   // (a vector grown by doubling holds up to 3 times the curves)
   for(const auto& e : ma.edges()) {
-    Generators g;
-    generator_key(e.first_generator(), &g[0]);
-    generator_key(e.second_generator(), &g[3]);
-    if(std::lexicographical_compare(g.begin() + 3, g.end(), g.begin(), g.begin() + 3)) {
-      std::swap_ranges(g.begin(), g.begin() + 3, g.begin() + 3);
-      keyed.emplace_back(g, e.opposite());
-    } else {
-      keyed.emplace_back(g, e);
+    const Key f = generator_key(e.first_generator()), g = generator_key(e.second_generator());
+    bool flip = g < f;
+    if(f == g) {
+      const auto c = e.geometry();
+      flip = c.b < c.a;
     }
+    Generators k;
+    std::copy(f.begin(), f.end(), k.begin() + (flip ? 5 : 0));
+    std::copy(g.begin(), g.end(), k.begin() + (flip ? 0 : 5));
+    keyed.emplace_back(k, flip ? e.opposite() : e);
   }
   std::sort(keyed.begin(), keyed.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
   // (two generators may share several curves: those in the order of their ends)
