@@ -299,6 +299,41 @@ void degree_four()
   CHECK(ma.number_of_edges() == 4, "four curves, got " << ma.number_of_edges());
 }
 
+// Halfedge_handle::source_radius() and target_radius() are the radii of the
+// vertex handles (also where edges of length zero join several vertices at
+// one point: rectilinear polygons and the centre of a square), and
+// input_rings() is the input polygon as given, ring by ring.
+template <class Traits>
+void radii_and_rings(const std::string& model)
+{
+  std::vector<std::vector<pma_test::Ring> > inputs;
+  inputs.push_back({pma_test::Ring{{0, 0}, {2, 0}, {2, 2}, {0, 2}}});
+  for(std::uint64_t seed = 1; seed <= 4; ++seed) inputs.push_back({pma_test::random_rectilinear_polygon(seed, 40, seed % 2 == 0)});
+  inputs.push_back(pma_test::random_polygon_with_holes(3, 20, 6));
+  std::size_t edges = 0, wrong_radii = 0, wrong_rings = 0;
+  for(const auto& rings : inputs) {
+    const auto ma = CGAL::medial_axis_2(rings, Traits());
+    for(const auto& e : ma.edges()) {
+      ++edges;
+      for(const auto& h : {e, e.opposite()})
+        if(h.source_radius() != h.source().radius() || h.target_radius() != h.target().radius()) ++wrong_radii;
+    }
+    const auto got = ma.input_rings();
+    bool same = got.size() == rings.size() && ma.number_of_input_rings() == rings.size();
+    for(std::size_t r = 0; same && r < rings.size(); ++r) {
+      same = got[r].size() == rings[r].size() && ma.input_ring_size(r) == rings[r].size();
+      for(std::size_t i = 0; same && i < rings[r].size(); ++i)
+        same = CGAL::to_double(got[r][i].x()) == rings[r][i].x() && CGAL::to_double(got[r][i].y()) == rings[r][i].y() &&
+               got[r][i] == ma.point({int(r), int(i)});
+    }
+    if(!same) ++wrong_rings;
+  }
+  CHECK(wrong_radii == 0, model << ": " << wrong_radii << " half-edges whose source_radius() or target_radius() is not their vertex's radius");
+  CHECK(wrong_rings == 0, model << ": input_rings() differs from the input on " << wrong_rings << " polygons");
+  CHECK(edges > 200, model << ": only " << edges << " curves");
+  CHECK(CGAL::Medial_axis_2<Epick>().input_rings().empty(), "input_rings() of an empty axis");
+}
+
 // Curves: polylines within tolerance, no silent cap, lengths far from 1.
 void curves()
 {
@@ -596,6 +631,8 @@ int main(int argc, char** argv)
   navigation();
   generators_counter_clockwise();
   degree_four();
+  radii_and_rings<CGAL::Progressive_medial_axis_traits_2<Epick> >("default traits");
+  radii_and_rings<CGAL::Progressive_medial_axis_traits_2<CGAL::Simple_cartesian<double> > >("double model");
   curves();
   lobes();
   progressive(argc > 2 ? argv[1] : "", argc > 2 ? argv[2] : "");

@@ -553,6 +553,24 @@ void several_polygons(const std::string& data)
   } catch(const std::exception& e) {
     CHECK(false, "several polygons, GeoJSON: " << e.what());
   }
+  // Pruned axes and centerlines too: the same bytes on one and two threads
+  // (the significance's curves directed from their end of smaller (x, y),
+  // whatever half-edge the axis lists; the kept parts sorted and directed as
+  // the whole curves; the centerline's paths started and ordered by points)
+  for(const std::string& f : {tmp + "/multi.wkt", files[3], data + "/c1m_GBR_0.wkt"}) {
+    const bool one_polygon = f != tmp + "/multi.wkt";
+    std::string outs[2];
+    for(int t = 1; t <= 2; ++t) {
+      const std::string name = "pruned" + std::to_string(t);
+      Result r = run(tool + " --pairs --prune ratio=0.2 --threads " + std::to_string(t) + outputs_to(name) +
+                     (one_polygon ? "--centerline " + tmp + "/" + name + ".cl --extend --width " + tmp + "/" + name + ".csv " : "") + f);
+      CHECK(r.status == 0 && r.out.find("pair ") != std::string::npos, f << " --prune on " << t << " threads: " << r.err);
+      outs[t - 1] = r.out;
+      for(const char* out : {".geojson", ".svg", ".wkt", ".cl", ".csv"})
+        if(one_polygon || (out != std::string(".cl") && out != std::string(".csv"))) outs[t - 1] += slurp(tmp + "/" + name + out);
+    }
+    CHECK(outs[0] == outs[1], f << ": --prune, --centerline and --width on one and two threads differ");
+  }
   auto without_times = [](const std::string& out) {
     std::istringstream in(out);
     std::string line, kept;

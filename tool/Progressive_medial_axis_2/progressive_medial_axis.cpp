@@ -556,19 +556,6 @@ void add_statistics(CGAL::Progressive_medial_axis_statistics& s, const CGAL::Pro
   s.abandoned_divide_and_conquers += t.abandoned_divide_and_conquers;
 }
 
-// The input rings of a one-shot's polygon, rebuilt from its axis (for the
-// one-shots that were given their rings)
-template <class Kernel>
-std::vector<std::vector<typename Kernel::Point_2> > axis_rings(const CGAL::Medial_axis_2<Kernel>& ma)
-{
-  std::vector<std::vector<typename Kernel::Point_2> > rings(ma.number_of_input_rings());
-  for(std::size_t r = 0; r < rings.size(); ++r) {
-    rings[r].reserve(ma.input_ring_size(r));
-    for(std::size_t i = 0; i < ma.input_ring_size(r); ++i) rings[r].push_back(ma.point({int(r), int(i)}));
-  }
-  return rings;
-}
-
 // One polygon of the input, its axis and what is computed from it.
 template <class Traits>
 struct Polygon_job {
@@ -1154,7 +1141,7 @@ int run(const Options& o)
         // (counted by the one-shot where its triangles are region growing's)
         const auto& counted = jobs[k].stats.region_growing_steps;
         if(!jobs[k].ma) return;
-        jobs[k].steps = counted ? *counted : PMA(axis_rings(*jobs[k].ma), Traits(), CGAL::TRUST_INPUT).number_of_steps();
+        jobs[k].steps = counted ? *counted : PMA(jobs[k].ma->input_rings(), Traits(), CGAL::TRUST_INPUT).number_of_steps();
       });
     });
     restore_filter_counters<Traits>(filters, 0);

@@ -532,6 +532,19 @@ public:
     std::pair<double, double> point_at(double s) const { return curve(d_, h_).point_at_length(s); }
     /// the unit tangent at arc length `s` from source(), pointing towards target()
     std::pair<double, double> tangent_at(double s) const { return curve(d_, h_).tangent_at_length(s); }
+    /// the point of source(): `source().point()` without building the vertex
+    /// handle (the vertices that edges of length zero join are at one point)
+    const Point_2& source_point() const { return d_->hds.point(d_->hds.source(h_), d_->points); }
+    /// the point of target(), as source_point()
+    const Point_2& target_point() const { return d_->hds.point(d_->hds.target(h_), d_->points); }
+    /// the radius of the maximal disk centred at source(): `source().radius()`
+    /// without building the vertex handle (which looks for the vertices that
+    /// edges of length zero join to the source, to name their point by one
+    /// of them); with exact decisions the same number (the disks of one
+    /// point are one disk, its radius correctly rounded)
+    FT source_radius() const { return d_->hds.radius(d_->hds.source(h_)); }
+    /// the radius of the maximal disk centred at target(), as source_radius()
+    FT target_radius() const { return d_->hds.radius(d_->hds.target(h_)); }
     /// the radius of the maximal disk centred at arc length `s` from source()
     /// (the distance to the generator of face(); in double)
     double radius_at(double s) const { return distance_to_point(point_at(s)); }
@@ -658,8 +671,11 @@ public:
 
   // The medial curves as a graph, for the analysis functions (significance,
   // pruning), read from the arrays instead of through handles: `curves`
-  // gets the id number of the half-edge of every medial curve, in the order
-  // of edges(), `ends` the id numbers of its source and target vertices,
+  // gets the id number of a half-edge of every medial curve, in the order
+  // of edges(), the one from the curve's end of smaller (x, y) (so that the
+  // lengths, and the times summed from them, do not depend on which
+  // half-edge the structure lists: on how the axis was computed), `ends`
+  // the id numbers of its source and target vertices,
   // `lengths` its length(), `radii` (if given) the radii at its ends in
   // double (read with the points).  The passes run in parallel where TBB is
   // linked and the kernel's numbers are doubles.  (The arrays are not
@@ -722,7 +738,7 @@ public:
     if(radii) radii->resize(m, no_init);
     parallel_blocks(m, [&](std::size_t b, std::size_t e) {
       for(std::size_t k = b; k < e; ++k) {
-        const int h = curves[k];
+        int h = curves[k];
         if(k + 16 < e) {   // the vertices and cells of a curve further on, read in no order
           const int g = curves[k + 16];
           Progressive_medial_axes::internal::prefetch(&d->hds.vertex(d->hds.source(g)));
@@ -738,6 +754,11 @@ public:
           if(f1 >= 0) Progressive_medial_axes::internal::prefetch(&d->points[std::size_t(d->hds.face(f1).p0)]);
         }
         ends[k] = {{representative_of(d->hds.source(h)), representative_of(d->hds.target(h))}};
+        if(d->hds.point(d->hds.target(h), d->points) < d->hds.point(d->hds.source(h), d->points)) {
+          h ^= 1;
+          curves[k] = h;
+          std::swap(ends[k][0], ends[k][1]);
+        }
         lengths[k] = curve(d, h).length();
         if(radii)
           (*radii)[k] = {{CGAL::to_double(d->hds.radius(ends[k][0])), CGAL::to_double(d->hds.radius(ends[k][1]))}};
@@ -758,6 +779,12 @@ public:
   std::size_t number_of_input_rings() const { return d_ ? d_->ring_start.size() - 1 : 0; }
   /// Number of vertices of ring r of the input polygon.
   std::size_t input_ring_size(std::size_t r) const { return std::size_t(d_->ring_start[r + 1] - d_->ring_start[r]); }
+  /// The rings of the input polygon, their points in the order and the
+  /// orientation of the input: ring r's vertex i is `point({r, i})`.
+  std::vector<std::vector<Point_2> > input_rings() const
+  {
+    return d_ ? Progressive_medial_axes::internal::input_rings(*d_) : std::vector<std::vector<Point_2> >();
+  }
 
   /// The boundary of the shape whose medial axis this is (at a step of a
   /// progressive computation, the current shape), as polygon vertices: its

@@ -29,6 +29,7 @@
 #include <memory>
 #include <numeric>
 #include <queue>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -288,11 +289,15 @@ from two shortest-path searches on the graph of the junctions and ends of
 the pruned axis (each chain of curves between them is one link there; an
 axis without ends, such as that of a plate with holes, needs no search).
 The paths, the chains between the junctions and ends, are then walked in
-parallel where TBB is linked, each from the end of it that comes first in
-an order that does not depend on the threads: the first end's curves,
-then by node.  So a path that reaches the first end starts there, and the
-first path does.  O(m + k log k) for m kept curves and k junctions and
-ends, plus O(n) per extended end.
+parallel where TBB is linked.  Their directions and their order depend on
+the axis alone (neither on the threads nor on how the axis was computed):
+a path starts at its end that comes first, the first end of the
+centerline before the others, those by their points (x, then y); the
+paths come in the order of their first ends, then of their last ends,
+then of the middles of their first curves.  So a path that reaches the
+first end starts there, and the first path does.  The searches start
+from, and break their ties by, that order of points too.  O(m + k log k)
+for m kept curves and k junctions and ends, plus O(n) per extended end.
 */
 template <class K>
 Medial_axis_centerline_2<K> medial_axis_centerline_2(const Pruned_medial_axis_2<K>& pruned, bool extend = false)
@@ -301,6 +306,7 @@ Medial_axis_centerline_2<K> medial_axis_centerline_2(const Pruned_medial_axis_2<
   typedef typename Centerline::Piece Piece;
   typedef typename Centerline::Path Path;
   typedef typename Pruned_medial_axis_2<K>::Curve Curve;
+  typedef typename Centerline::Point Point;
   Centerline out(pruned.medial_axis());
   const auto& curves = pruned.curves();
   if(curves.empty()) return out;
@@ -400,13 +406,60 @@ Medial_axis_centerline_2<K> medial_axis_centerline_2(const Pruned_medial_axis_2<
     });
   }
 
+  // The orders that do not depend on how the axis was computed (the node
+  // numbers do): the keys by their points, and where that leaves a tie, the
+  // middles of curves.
+  auto piece_of = [&](int h) {   // the kept curve of a half, walked in its direction
+    const Curve& c = curves[std::size_t(h >> 1)];
+    Piece p;
+    p.halfedge = c.halfedge;
+    p.from = c.begin;
+    p.to = c.end;
+    if(h & 1) std::swap(p.from, p.to);
+    return p;
+  };
+  auto start_point_of = [&](int h) {   // the point of the node a half leaves
+    const Curve& c = curves[std::size_t(h >> 1)];
+    return (h & 1) ? c.end_point() : c.begin_point();
+  };
+  auto middle_of = [&](int h) {
+    const Piece p = piece_of(h);
+    return p.halfedge.point_at(0.5 * (p.from + p.to));
+  };
+  std::vector<Point> key_point(keys.size());
+  Progressive_medial_axes::internal::parallel_blocks(keys.size(), [&](std::size_t b, std::size_t e) {
+    for(std::size_t i = b; i < e; ++i) key_point[i] = start_point_of(key_half[std::size_t(key_first[i])]);
+  }, std::is_floating_point<typename Medial_axis_2<K>::FT>::value);
+  std::vector<int> keys_by_point(keys.size());
+  {
+    // (sorted with their points: a sort of indices reading the points would
+    // read them in no order)
+    std::vector<std::pair<Point, int> > sorted(keys.size());
+    for(std::size_t i = 0; i < keys.size(); ++i) sorted[i] = std::make_pair(key_point[i], int(i));
+    std::sort(sorted.begin(), sorted.end());
+    for(std::size_t r = 0; r < keys.size(); ++r) keys_by_point[r] = sorted[r].second;
+  }
+
   // from an end (if there is none, the centerline is the cycles of the
-  // first node on a curve; nodes of the significance's graph that are not
-  // kept have no curve)
+  // first junction, or without junction the first node on a curve, by
+  // point; nodes of the significance's graph that are not kept have no
+  // curve)
   int start = -1, some = -1;
-  for(int v = 0; v < n_nodes && start < 0; ++v) {
-    if(degree(v) == 1) start = v;
-    if(some < 0 && degree(v) > 0) some = v;
+  for(int i : keys_by_point) {
+    if(start < 0 && degree(keys[std::size_t(i)]) == 1) start = keys[std::size_t(i)];
+    if(some < 0) some = keys[std::size_t(i)];
+  }
+  if(some < 0) {   // cycles without junction: their node of smallest point
+    Point best;
+    for(int i = 0; i < int(links.size()); ++i)
+      for(int h : {2 * i, 2 * i + 1}) {
+        const Point q = start_point_of(h);
+        const int v = (h & 1) ? links[std::size_t(i)].b : links[std::size_t(i)].a;
+        if(some < 0 || q < best) {
+          best = q;
+          some = v;
+        }
+      }
   }
   int end_a = some, end_b = some;
   if(start >= 0) {
@@ -429,7 +482,7 @@ Medial_axis_centerline_2<K> medial_axis_centerline_2(const Pruned_medial_axis_2<
         key_near[std::size_t(k)] = Key_link{key_of[std::size_t(to)], length};
       }
     // the end farthest from an end, along the curves (Dijkstra); on a tie the
-    // first in the order of the nodes
+    // first by point
     auto farthest = [&](int source) {
       std::vector<double> dist(keys.size(), std::numeric_limits<double>::infinity());
       typedef std::pair<double, int> Item;
@@ -451,11 +504,13 @@ Medial_axis_centerline_2<K> medial_axis_centerline_2(const Pruned_medial_axis_2<
       }
       int best = source;
       double best_dist = 0;
-      for(std::size_t i = 0; i < keys.size(); ++i)
+      for(int k : keys_by_point) {
+        const std::size_t i = std::size_t(k);
         if(degree(keys[i]) == 1 && dist[i] > best_dist && dist[i] != std::numeric_limits<double>::infinity()) {
           best = keys[i];
           best_dist = dist[i];
         }
+      }
       return best;
     };
     end_a = farthest(start);
@@ -486,15 +541,23 @@ Medial_axis_centerline_2<K> medial_axis_centerline_2(const Pruned_medial_axis_2<
     if(--y.degree == 1 && o != end_a && o != end_b) leaves.push_back(o);
   }
   auto live = [&](int h) { return !removed_link[std::size_t(h >> 1)]; };
-  // the first live outgoing half of a node in the order of the halves, by a
-  // scan of the links (for a node of degree 2, once)
+  // the live outgoing half of a node whose curve has the smallest middle,
+  // by a scan of the links (for a node of degree 2, once)
   auto first_live_half = [&](int v) {
+    int best = -1;
+    Point best_middle;
     for(int i = 0; i < int(links.size()); ++i) {
       if(removed_link[std::size_t(i)]) continue;
-      if(links[std::size_t(i)].a == v) return 2 * i;
-      if(links[std::size_t(i)].b == v) return 2 * i + 1;
+      for(int h : {2 * i, 2 * i + 1}) {
+        if(((h & 1) ? links[std::size_t(i)].b : links[std::size_t(i)].a) != v) continue;
+        const Point m = middle_of(h);
+        if(best < 0 || m < best_middle) {
+          best = h;
+          best_middle = m;
+        }
+      }
     }
-    return -1;
+    return best;
   };
   // a junction or end of the component of end_a, if it has one (end_a can
   // be a node of degree 2 when the axis has no end)
@@ -507,22 +570,15 @@ Medial_axis_centerline_2<K> medial_axis_centerline_2(const Pruned_medial_axis_2<
   // The paths: the maximal chains between nodes of degree other than 2, of
   // the component of end_a only.  A chain is walked from its start (a live
   // outgoing half at a junction or an end) that comes first in the order:
-  // root's, then by node, then by half.  So the path at an end of the
-  // centerline starts there, and the paths come in that order.
+  // root's, then by node, then by half; then each path is turned to start
+  // at its end that comes first by point (root first), and the paths are
+  // put in that order (below).  So the path at an end of the centerline
+  // starts there.
   // A step of a walk is a read that depends on the step before it (a
   // random place in memory, for most steps): the walks are interleaved,
   // Lanes at a time, so that their reads overlap.  Each chain is met from
   // both of its starts; the later one skips it (or, when both were walked
   // at once, drops it).
-  auto piece_of = [&](int h) {   // the kept curve of a half, walked in its direction
-    const Curve& c = curves[std::size_t(h >> 1)];
-    Piece p;
-    p.halfedge = c.halfedge;
-    p.from = c.begin;
-    p.to = c.end;
-    if(h & 1) std::swap(p.from, p.to);
-    return p;
-  };
   if(degree(root) == 2) {   // a cycle without a junction
     std::vector<int> halves;
     int h = first_live_half(root), from = root, v = end_of(h, root);
@@ -552,7 +608,8 @@ Medial_axis_centerline_2<K> medial_axis_centerline_2(const Pruned_medial_axis_2<
     for(int v : keys)
       if(v != root && degree(v) != 2) add_starts(v);
     // whether the start at position i comes before the outgoing half f of
-    // the key t in that order
+    // the key t in the order of the walks (root's, then by node, then by
+    // half; the paths are put in the order of points after)
     const int root_key = key_of[std::size_t(root)];
     auto before = [&](std::size_t i, int f, int t) {
       const bool ri = i < root_starts, rf = t == root_key;
@@ -623,20 +680,61 @@ Medial_axis_centerline_2<K> medial_axis_centerline_2(const Pruned_medial_axis_2<
     const int root_component = find(root_key);
     for(std::size_t i = 0; i < chains.size(); ++i)
       if(chains[i].to >= 0 && find(start_key[i]) == root_component) kept.push_back(i);
-    // the paths, in the order of their starts, their pieces written in
-    // parallel (the curves read in no order: asked for ahead)
-    out.paths_.resize(kept.size());
-    std::vector<std::size_t> offset(kept.size() + 1, 0);
-    for(std::size_t i = 0; i < kept.size(); ++i)
-      offset[i + 1] = offset[i] + (chains[kept[i]].end - chains[kept[i]].begin);
-    out.pieces_ = Progressive_medial_axes::internal::Written_once_array<Piece>(offset.back());
-    Progressive_medial_axes::internal::parallel_blocks(kept.size(), [&](std::size_t b, std::size_t e) {
-      for(std::size_t i = b; i < e; ++i) {
-        const Chain& c = chains[kept[i]];
+    // Each path from its end that comes first, in that order: root, then by
+    // the point of its key (a path from a key back to it, from the end whose
+    // curve has the smaller middle), and the paths by their first end, then
+    // their last, then the middle of their first curve.
+    std::vector<int> key_rank(keys.size());
+    for(std::size_t r = 0; r < keys.size(); ++r) key_rank[std::size_t(keys_by_point[r])] = int(r);
+    auto rank = [&](int k) { return k == root_key ? -1 : key_rank[std::size_t(k)]; };
+    struct Oriented { int first, last; std::size_t chain; bool reversed; };
+    std::vector<Oriented> order(kept.size());
+    for(std::size_t i = 0; i < kept.size(); ++i) {
+      const Chain& c = chains[kept[i]];
+      const int a = rank(start_key[kept[i]]), b = rank(c.to);
+      bool reversed = b < a;
+      if(a == b) {
         const std::vector<int>& halves = seq[c.part];
-        for(std::size_t j = c.begin; j < c.end; ++j) {
-          if(j + 16 < halves.size()) prefetch(&curves[std::size_t(halves[j + 16] >> 1)]);
-          out.pieces_.write(offset[i] + (j - c.begin), piece_of(halves[j]));
+        reversed = middle_of(halves[c.end - 1] ^ 1) < middle_of(halves[c.begin]);
+      }
+      order[i] = Oriented{(std::min)(a, b), (std::max)(a, b), kept[i], reversed};
+    }
+    auto first_middle = [&](const Oriented& o) {
+      const Chain& c = chains[o.chain];
+      const std::vector<int>& halves = seq[c.part];
+      return o.reversed ? middle_of(halves[c.end - 1] ^ 1) : middle_of(halves[c.begin]);
+    };
+    std::sort(order.begin(), order.end(), [](const Oriented& x, const Oriented& y) {
+      return std::make_pair(x.first, x.last) < std::make_pair(y.first, y.last);
+    });
+    for(std::size_t i = 0; i < order.size();) {   // (several paths between two keys: by their first curves)
+      std::size_t j = i + 1;
+      while(j < order.size() && order[j].first == order[i].first && order[j].last == order[i].last) ++j;
+      if(j - i > 1) {
+        std::vector<std::pair<Point, Oriented> > tied;
+        for(std::size_t k = i; k < j; ++k) tied.emplace_back(first_middle(order[k]), order[k]);
+        std::sort(tied.begin(), tied.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
+        for(std::size_t k = i; k < j; ++k) order[k] = tied[k - i].second;
+      }
+      i = j;
+    }
+    // the paths, their pieces written in parallel (the curves read in no
+    // order: asked for ahead)
+    out.paths_.resize(order.size());
+    std::vector<std::size_t> offset(order.size() + 1, 0);
+    for(std::size_t i = 0; i < order.size(); ++i)
+      offset[i + 1] = offset[i] + (chains[order[i].chain].end - chains[order[i].chain].begin);
+    out.pieces_ = Progressive_medial_axes::internal::Written_once_array<Piece>(offset.back());
+    Progressive_medial_axes::internal::parallel_blocks(order.size(), [&](std::size_t b, std::size_t e) {
+      for(std::size_t i = b; i < e; ++i) {
+        const Chain& c = chains[order[i].chain];
+        const std::vector<int>& halves = seq[c.part];
+        const std::size_t n = c.end - c.begin;
+        for(std::size_t j = 0; j < n; ++j) {
+          const std::size_t at = order[i].reversed ? c.end - 1 - j : c.begin + j;
+          const std::size_t ahead = order[i].reversed ? at - 16 : at + 16;   // (wraps below 0: then too large)
+          if(ahead < halves.size()) prefetch(&curves[std::size_t(halves[ahead] >> 1)]);
+          out.pieces_.write(offset[i] + j, piece_of(order[i].reversed ? halves[at] ^ 1 : halves[at]));
         }
         out.set_pieces(out.paths_[i], offset[i], offset[i + 1]);
       }

@@ -95,7 +95,10 @@ height above the directrix on a parabola), so \f$ET\f$ is concave along a
 curve: the set where it is above a threshold is one interval.
 
 Lengths and times are in double precision (they are sums of arc lengths of
-parabolas, which are not algebraic); the axis itself stays exact.
+parabolas, which are not algebraic); the axis itself stays exact.  Each
+curve's length is taken from its end of smaller (x, y), so the lengths and
+times do not depend on how the axis was computed (for a one-shot, on the
+number of threads), only on the axis.
 
 \tparam K the kernel of the axis.
 */
@@ -209,10 +212,11 @@ public:
   int vertex_index(const Vertex_handle& v) const { return checked(v.id_number() < vertex_map_.size() ? vertex_map_[v.id_number()] : -1); }
   int edge_index(const Halfedge_handle& h) const
   {
-    // the arcs are in the order of the id numbers of their half-edges
+    // the arcs are in the order of the id numbers of their pairs of
+    // half-edges (each arc's half-edge from its end of smaller (x, y))
     const int e = int(h.id_number() & ~std::size_t(1));
-    const auto it = std::lower_bound(arcs_.begin(), arcs_.end(), e, [](const Arc& a, int k) { return a.halfedge < k; });
-    return checked(it != arcs_.end() && it->halfedge == e ? int(it - arcs_.begin()) : -1);
+    const auto it = std::lower_bound(arcs_.begin(), arcs_.end(), e, [](const Arc& a, int k) { return (a.halfedge & ~1) < k; });
+    return checked(it != arcs_.end() && (it->halfedge & ~1) == e ? int(it - arcs_.begin()) : -1);
   }
   static int checked(int i)
   {
@@ -495,7 +499,7 @@ public:
 
   /// A kept part of a curve.
   struct Curve {
-    Halfedge_handle halfedge;  ///< the curve, with its direction
+    Halfedge_handle halfedge;  ///< the curve, directed from its end of smaller (x, y)
     double begin = 0, end = 0; ///< the kept part, arc lengths from `halfedge.source()`
     double full_length = 0;    ///< `halfedge.length()`
     double et_begin = 0, et_end = 0; ///< the erosion thickness at both ends (may be infinite)
@@ -506,11 +510,11 @@ public:
     Vertex_handle target() const { return halfedge.target(); } ///< `halfedge.target()`
     std::pair<double, double> begin_point() const
     {
-      return cut_at_begin() ? halfedge.point_at(begin) : Medial_axis::to_xy(source().point());
+      return cut_at_begin() ? halfedge.point_at(begin) : Medial_axis::to_xy(halfedge.source_point());
     }
     std::pair<double, double> end_point() const
     {
-      return cut_at_end() ? halfedge.point_at(end) : Medial_axis::to_xy(target().point());
+      return cut_at_end() ? halfedge.point_at(end) : Medial_axis::to_xy(halfedge.target_point());
     }
   };
 

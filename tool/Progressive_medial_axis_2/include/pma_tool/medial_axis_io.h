@@ -114,11 +114,11 @@ struct Axis_part {
   /// differs from it in the last bits and with the direction of the curve.
   double radius_at_begin() const
   {
-    return cut_begin ? h.radius_at(begin) : CGAL::to_double(h.source().radius());
+    return cut_begin ? h.radius_at(begin) : CGAL::to_double(h.source_radius());
   }
   double radius_at_end() const
   {
-    return cut_end ? h.radius_at(end) : CGAL::to_double(h.target().radius());
+    return cut_end ? h.radius_at(end) : CGAL::to_double(h.target_radius());
   }
   std::vector<std::pair<double, double> > polyline(double tolerance) const
   {
@@ -127,21 +127,24 @@ struct Axis_part {
   std::array<std::pair<double, double>, 3> bezier() const { return h.quadratic_bezier(begin, end); }
 };
 
-/// Every medial curve of `ma`, whole, in an order and a direction that
-/// depend on the axis alone, not on how it was computed (the parts of a
-/// one-shot, so the number of threads, decide which half-edge of a curve
-/// the structure lists, and where): each curve directed with the smaller
-/// of its two generators on its left, sorted by its generators, and the
-/// curves of the same two generators by their ends.  So the outputs of one
-/// input are the same bytes on any number of threads, where the axis is
-/// (with exact decisions: its vertices correctly rounded).  A generator's
-/// key is point or edge, then its first and its last input vertex: where a
-/// vertex lies inside an edge, the part of the edge from there starts at
-/// that vertex, as the vertex's own edge does, and ends elsewhere.  (Two
-/// generators of one key, which no valid polygon has, would have their
-/// curve directed from its end of smaller (x, y).)
+/// The parts `parts` in an order and a direction that depend on the axis
+/// alone, not on how it was computed (the parts of a one-shot, so the number
+/// of threads, decide which half-edge of a curve the structure lists, and
+/// where): each curve directed with the smaller of its two generators on its
+/// left, sorted by its generators, and the curves of the same two generators
+/// by their ends.  So the outputs of one input are the same bytes on any
+/// number of threads, where the axis is (with exact decisions: its vertices
+/// correctly rounded).  A generator's key is point or edge, then its first
+/// and its last input vertex: where a vertex lies inside an edge, the part
+/// of the edge from there starts at that vertex, as the vertex's own edge
+/// does, and ends elsewhere.  (Two generators of one key, which no valid
+/// polygon has, would have their curve directed from its end of smaller
+/// (x, y).)  A part cut by a pruning and turned round keeps its place on
+/// the curve: its arc lengths are taken from the other end.  A whole part
+/// turned round gets `end = h.length()` if `whole_lengths`; else the arc
+/// lengths of whole parts are left for the caller to set.
 template <class Medial_axis>
-std::vector<Axis_part<Medial_axis> > axis_parts(const Medial_axis& ma)
+void canonical_order(std::vector<Axis_part<Medial_axis> >& parts, bool whole_lengths)
 {
   typedef std::array<int, 5> Key;
   typedef std::array<int, 10> Generators;
@@ -149,19 +152,30 @@ std::vector<Axis_part<Medial_axis> > axis_parts(const Medial_axis& ma)
     const auto a = f.source_vertex(), b = f.target_vertex();
     return Key{{f.is_point() ? 1 : 0, a.ring, a.index, b.ring, b.index}};
   };
-  std::vector<std::pair<Generators, typename Medial_axis::Halfedge_handle> > keyed;
-  keyed.reserve(ma.number_of_edges());   // (a vector grown by doubling holds up to 3 times the curves)
-  for(const auto& e : ma.edges()) {
-    const Key f = generator_key(e.first_generator()), g = generator_key(e.second_generator());
+  std::vector<std::pair<Generators, std::size_t> > keyed;
+  keyed.reserve(parts.size());
+  for(std::size_t i = 0; i < parts.size(); ++i) {
+    Axis_part<Medial_axis>& p = parts[i];
+    const Key f = generator_key(p.h.first_generator()), g = generator_key(p.h.second_generator());
     bool flip = g < f;
     if(f == g) {
-      const auto c = e.geometry();
+      const auto c = p.h.geometry();
       flip = c.b < c.a;
     }
     Generators k;
     std::copy(f.begin(), f.end(), k.begin() + (flip ? 5 : 0));
     std::copy(g.begin(), g.end(), k.begin() + (flip ? 0 : 5));
-    keyed.emplace_back(k, flip ? e.opposite() : e);
+    keyed.emplace_back(k, i);
+    if(!flip) continue;
+    p.h = p.h.opposite();
+    if(!p.whole) {
+      const double length = p.h.length(), begin = p.begin, end = p.end;
+      p.begin = p.cut_end ? length - end : 0;
+      p.end = p.cut_begin ? length - begin : length;
+    } else if(whole_lengths)
+      p.end = p.h.length();
+    std::swap(p.cut_begin, p.cut_end);
+    std::swap(p.et_begin, p.et_end);
   }
   std::sort(keyed.begin(), keyed.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
   // (two generators may share several curves: those in the order of their ends)
@@ -169,24 +183,37 @@ std::vector<Axis_part<Medial_axis> > axis_parts(const Medial_axis& ma)
     std::size_t j = i + 1;
     while(j < keyed.size() && keyed[j].first == keyed[i].first) ++j;
     if(j - i > 1)
-      std::sort(keyed.begin() + std::ptrdiff_t(i), keyed.begin() + std::ptrdiff_t(j), [](const auto& x, const auto& y) {
-        const auto a = x.second.geometry(), b = y.second.geometry();
+      std::sort(keyed.begin() + std::ptrdiff_t(i), keyed.begin() + std::ptrdiff_t(j), [&](const auto& x, const auto& y) {
+        const auto a = parts[x.second].h.geometry(), b = parts[y.second].h.geometry();
         return std::make_pair(a.a, a.b) < std::make_pair(b.a, b.b);
       });
     i = j;
   }
   std::vector<Axis_part<Medial_axis> > out;
-  out.reserve(keyed.size());
-  for(const auto& k : keyed) {
+  out.reserve(parts.size());
+  for(const auto& k : keyed) out.push_back(parts[k.second]);
+  parts.swap(out);
+}
+
+/// Every medial curve of `ma`, whole, in the order and the direction of
+/// canonical_order().
+template <class Medial_axis>
+std::vector<Axis_part<Medial_axis> > axis_parts(const Medial_axis& ma)
+{
+  std::vector<Axis_part<Medial_axis> > out;
+  out.reserve(ma.number_of_edges());   // (a vector grown by doubling holds up to 3 times the curves)
+  for(const auto& e : ma.edges()) {
     Axis_part<Medial_axis> p;
-    p.h = k.second;
-    p.end = k.second.length();
+    p.h = e;
     out.push_back(p);
   }
+  canonical_order(out, false);
+  for(auto& p : out) p.end = p.h.length();   // (all whole)
   return out;
 }
 
-/// The kept parts of a pruned axis.
+/// The kept parts of a pruned axis, in the order and the direction of
+/// canonical_order().
 template <class K>
 std::vector<Axis_part<CGAL::Medial_axis_2<K> > > axis_parts(const CGAL::Pruned_medial_axis_2<K>& pruned)
 {
@@ -205,6 +232,9 @@ std::vector<Axis_part<CGAL::Medial_axis_2<K> > > axis_parts(const CGAL::Pruned_m
     p.et_end = c.et_end;
     out.push_back(p);
   }
+  // (a whole part's end, the pruning's full_length, is the length of its
+  // half-edge, computed the same way)
+  canonical_order(out, true);
   return out;
 }
 
