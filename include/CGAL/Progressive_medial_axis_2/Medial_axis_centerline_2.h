@@ -294,8 +294,12 @@ the axis alone (neither on the threads nor on how the axis was computed):
 a path starts at its end that comes first, the first end of the
 centerline before the others, those by their points (x, then y); the
 paths come in the order of their first ends, then of their last ends,
-then of the middles of their first curves.  So a path that reaches the
-first end starts there, and the first path does.  The searches start
+then of the middles of the kept parts of their first curves (a path from
+a junction back to it, and a cycle without junction, run the way whose
+first curve has the smaller middle).  So a path that reaches the first
+end starts there, and the first path does.  (Two junctions or ends at one
+point in double, which exact decisions can give where branch points are
+closer than the rounding, are ordered by how the axis was computed.)  The searches start
 from, and break their ties by, that order of points too.  O(m + k log k)
 for m kept curves and k junctions and ends, plus O(n) per extended end.
 */
@@ -572,8 +576,7 @@ Medial_axis_centerline_2<K> medial_axis_centerline_2(const Pruned_medial_axis_2<
   // outgoing half at a junction or an end) that comes first in the order:
   // root's, then by node, then by half; then each path is turned to start
   // at its end that comes first by point (root first), and the paths are
-  // put in that order (below).  So the path at an end of the centerline
-  // starts there.
+  // put in that order (below).  So the path at end_a (root) starts there.
   // A step of a walk is a read that depends on the step before it (a
   // random place in memory, for most steps): the walks are interleaved,
   // Lanes at a time, so that their reads overlap.  Each chain is met from

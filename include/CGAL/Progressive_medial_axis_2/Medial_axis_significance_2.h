@@ -98,7 +98,9 @@ Lengths and times are in double precision (they are sums of arc lengths of
 parabolas, which are not algebraic); the axis itself stays exact.  Each
 curve's length is taken from its end of smaller (x, y), so the lengths and
 times do not depend on how the axis was computed (for a one-shot, on the
-number of threads), only on the axis.
+number of threads), only on the axis.  Which curve a vertex sends its
+front into where two fronts reach it at the same time in double (a
+symmetric shape) still does: the first child peeled, or the parent.
 
 \tparam K the kernel of the axis.
 */
