@@ -691,22 +691,19 @@ Medial_axis_centerline_2<K> medial_axis_centerline_2(const Pruned_medial_axis_2<
     for(std::size_t r = 0; r < keys.size(); ++r) key_rank[std::size_t(keys_by_point[r])] = int(r);
     auto rank = [&](int k) { return k == root_key ? -1 : key_rank[std::size_t(k)]; };
     struct Oriented { int first, last; std::size_t chain; bool reversed; };
+    // the middle of the first curve of a chain, read forward or reversed
+    auto first_middle_of = [&](const Chain& c, bool reversed) {
+      const std::vector<int>& halves = seq[c.part];
+      return middle_of(reversed ? halves[c.end - 1] ^ 1 : halves[c.begin]);
+    };
     std::vector<Oriented> order(kept.size());
     for(std::size_t i = 0; i < kept.size(); ++i) {
       const Chain& c = chains[kept[i]];
       const int a = rank(start_key[kept[i]]), b = rank(c.to);
-      bool reversed = b < a;
-      if(a == b) {
-        const std::vector<int>& halves = seq[c.part];
-        reversed = middle_of(halves[c.end - 1] ^ 1) < middle_of(halves[c.begin]);
-      }
+      const bool reversed = a == b ? first_middle_of(c, true) < first_middle_of(c, false) : b < a;
       order[i] = Oriented{(std::min)(a, b), (std::max)(a, b), kept[i], reversed};
     }
-    auto first_middle = [&](const Oriented& o) {
-      const Chain& c = chains[o.chain];
-      const std::vector<int>& halves = seq[c.part];
-      return o.reversed ? middle_of(halves[c.end - 1] ^ 1) : middle_of(halves[c.begin]);
-    };
+    auto first_middle = [&](const Oriented& o) { return first_middle_of(chains[o.chain], o.reversed); };
     std::sort(order.begin(), order.end(), [](const Oriented& x, const Oriented& y) {
       return std::make_pair(x.first, x.last) < std::make_pair(y.first, y.last);
     });
