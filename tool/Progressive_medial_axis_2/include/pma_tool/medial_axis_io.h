@@ -97,8 +97,10 @@ private:
 };
 
 /// A medial curve of an output, or the part of it that a pruning keeps:
-/// arc lengths `begin` to `end` from the source of `h`, with the erosion
-/// thickness at both ends when the axis is pruned.
+/// arc lengths `begin` to `end` from the source of `h` (for a part that is
+/// not `whole`; a whole part is the curve of `h`, its length computed where
+/// an output needs it), with the erosion thickness at both ends when the
+/// axis is pruned.
 template <class Medial_axis>
 struct Axis_part {
   typename Medial_axis::Halfedge_handle h;
@@ -124,7 +126,10 @@ struct Axis_part {
   {
     return whole ? h.polyline(tolerance) : h.polyline(tolerance, begin, end);
   }
-  std::array<std::pair<double, double>, 3> bezier() const { return h.quadratic_bezier(begin, end); }
+  std::array<std::pair<double, double>, 3> bezier() const
+  {
+    return whole ? h.quadratic_bezier(0, h.length()) : h.quadratic_bezier(begin, end);
+  }
 };
 
 /// The parts `parts` in an order and a direction that depend on the axis
@@ -140,9 +145,8 @@ struct Axis_part {
 /// does, and ends elsewhere.  (Two generators of one key, which no valid
 /// polygon has, would have their curve directed from its end of smaller
 /// (x, y).)  A part cut by a pruning and turned round keeps its place on
-/// the curve: its arc lengths are taken from the other end.  A whole part
-/// gets `begin = 0` and `end = h.length()` of its half-edge as directed.
-/// The parts are permuted in place (a copy of them would be 56 bytes a
+/// the curve: its arc lengths are taken from the other end.  The parts are
+/// permuted in place (a copy of them would be 56 bytes a
 /// curve more at the peak of a pruned output of 1.5 million curves).
 template <class Medial_axis>
 void canonical_order(std::vector<Axis_part<Medial_axis> >& parts)
@@ -176,10 +180,6 @@ void canonical_order(std::vector<Axis_part<Medial_axis> >& parts)
       }
       std::swap(p.cut_begin, p.cut_end);
       std::swap(p.et_begin, p.et_end);
-    }
-    if(p.whole) {
-      p.begin = 0;
-      p.end = p.h.length();
     }
   }
   std::sort(keyed.begin(), keyed.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
@@ -237,11 +237,13 @@ std::vector<Axis_part<CGAL::Medial_axis_2<K> > > axis_parts(const CGAL::Pruned_m
   for(const auto& c : pruned.curves()) {
     Axis_part<CGAL::Medial_axis_2<K> > p;
     p.h = c.halfedge;
-    p.begin = c.begin;
-    p.end = c.end;
     p.cut_begin = c.cut_at_begin();
     p.cut_end = c.cut_at_end();
     p.whole = !p.cut_begin && !p.cut_end;
+    if(!p.whole) {
+      p.begin = c.begin;
+      p.end = c.end;
+    }
     p.with_et = true;
     p.et_begin = c.et_begin;
     p.et_end = c.et_end;
