@@ -814,12 +814,18 @@ public:
     // The outer boundary holds the smallest point (x, then y): every hole
     // lies strictly inside it.  This is exact and needs no area.
     // (Where a hole touches it there, the counter-clockwise cycle is the outer one.)
+    // (The outer candidate's smallest point is kept: found again for each
+    // cycle, it made this quadratic, 58 s of a GeoJSON output of a polygon of
+    // 191,274 holes; RESULTS.md, seventy-first session.)
     std::size_t outer = 0;
+    int outer_min = cycles.empty() ? 0 : min_point(cycles[0]);
     for(std::size_t i = 1; i < cycles.size(); ++i) {
-      const int a = min_point(cycles[i]), b = min_point(cycles[outer]);
-      if(lexicographically_smaller(a, b) ||
-         (!lexicographically_smaller(b, a) && !counterclockwise(cycles[outer]) && counterclockwise(cycles[i])))
+      const int a = min_point(cycles[i]);
+      if(lexicographically_smaller(a, outer_min) ||
+         (!lexicographically_smaller(outer_min, a) && !counterclockwise(cycles[outer]) && counterclockwise(cycles[i]))) {
         outer = i;
+        outer_min = a;
+      }
     }
     if(!cycles.empty()) std::swap(cycles[0], cycles[outer]);
     splice_lobes(cycles);

@@ -540,10 +540,16 @@ private:
     std::vector<char> ccw(cycles.size());
     for(std::size_t i = 0; i < cycles.size(); ++i) ccw[i] = counterclockwise(cycles[i]);
     // the outer ring: the counter-clockwise cycle with the smallest point
+    // (the outer candidate's smallest point kept, not found again for each cycle)
     std::size_t outer = cycles.size();
+    const Point_2* outer_min = nullptr;
     for(std::size_t i = 0; i < cycles.size(); ++i) {
       if(!ccw[i]) continue;
-      if(outer == cycles.size() || smaller(min_place(cycles[i]), min_place(cycles[outer]))) outer = i;
+      const Point_2& m = min_place(cycles[i]);
+      if(outer == cycles.size() || smaller(m, *outer_min)) {
+        outer = i;
+        outer_min = &m;
+      }
     }
     if(outer == cycles.size())
       throw Input_error("the union is not a valid polygon: it has no outer ring");
