@@ -647,6 +647,46 @@ struct Repair_counts {
   }
 };
 
+#ifdef CGAL_LINKED_WITH_TBB
+/// Writes to `out` the texts of pieces of an output, formatted on every
+/// thread of the current arena and written in order, so that at most a few
+/// pieces' text is held at a time.  `next(piece)` (in order, on one thread
+/// at a time) sets the next piece, or returns false when there is none;
+/// `format(piece)` (on any thread) returns its text; `written(piece)` (in
+/// order, on one thread at a time) is called once its text is written.
+/// `before` is written before the first text that is not empty, whose first
+/// `skip` characters are not written (the separator before its first
+/// item).  Returns whether any text was written.
+template <class Piece, class Next, class Format, class Written>
+bool write_in_pieces(std::ostream& out, int threads, const std::string& before, std::size_t skip, const Next& next,
+                     const Format& format, const Written& written)
+{
+  bool any = false;
+  tbb::parallel_pipeline(
+    std::size_t(4 * threads),
+    tbb::make_filter<void, Piece>(tbb::filter_mode::serial_in_order,
+                                  [&](tbb::flow_control& control) -> Piece {
+                                    Piece p;
+                                    if(!next(p)) control.stop();
+                                    return p;
+                                  }) &
+      tbb::make_filter<Piece, std::pair<Piece, std::string> >(
+        tbb::filter_mode::parallel, [&](const Piece& p) { return std::make_pair(p, format(p)); }) &
+      tbb::make_filter<std::pair<Piece, std::string>, void>(
+        tbb::filter_mode::serial_in_order, [&](const std::pair<Piece, std::string>& t) {
+          const std::string& text = t.second;
+          if(!text.empty()) {
+            const std::size_t s = any ? 0 : skip;
+            if(!any) out << before;
+            out.write(text.data() + s, std::streamsize(text.size() - s));
+            any = true;
+          }
+          written(t.first);
+        }));
+  return any;
+}
+#endif
+
 template <class Traits>
 int run(const Options& o)
 {
@@ -1187,12 +1227,40 @@ int run(const Options& o)
   }
   // the curves, for the outputs that list them (a plain run does not pay
   // for them), sorted (axis_parts()) on every thread
-  if(o.pairs || !o.svg.empty() || !o.geojson.empty() || !o.wkt_out.empty())
-    in_arena([&]() {
-      for_each_polygon(jobs_largest_first, [&](std::size_t k) {
-        layers[k].parts = o.prune ? pma_tool::axis_parts(*jobs[k].pruned) : pma_tool::axis_parts(*jobs[k].ma);
-      });
-    });
+  auto curves_of = [&](std::size_t k) {
+    return o.prune ? pma_tool::axis_parts(*jobs[k].pruned) : pma_tool::axis_parts(*jobs[k].ma);
+  };
+  const int listings = int(o.pairs) + int(!o.svg.empty()) + int(!o.geojson.empty()) + int(!o.wkt_out.empty());
+#ifdef CGAL_LINKED_WITH_TBB
+  // (where the GeoJSON or the WKT alone lists them, each polygon's when it
+  // is written, and freed once it is: see write_in_pieces() below)
+  const bool curves_when_written = listings == 1 && (!o.geojson.empty() || !o.wkt_out.empty());
+#else
+  const bool curves_when_written = false;
+#endif
+  if(listings > 0 && !curves_when_written)
+    in_arena([&]() { for_each_polygon(jobs_largest_first, [&](std::size_t k) { layers[k].parts = curves_of(k); }); });
+  // the curves of polygon k for an output written in pieces, at its first
+  // piece; freed after its last
+  auto curves_due = [&](std::size_t k) {
+    if(curves_when_written) layers[k].parts = curves_of(k);
+  };
+  auto curves_done = [&](std::size_t k) {
+    if(curves_when_written) std::vector<pma_tool::Axis_part<Medial_axis> >().swap(layers[k].parts);
+  };
+#ifdef CGAL_LINKED_WITH_TBB
+  // The outputs that list curves in pieces of at most `piece` curves or
+  // branch points, formatted on every thread and written in order, so that
+  // at most a few pieces' text is held at a time, and a large polygon is
+  // formatted on every thread too.  (A polygon's text was held whole: 990 MB
+  // and more for one of a million vertices, RESULTS.md, seventy-first
+  // session.)
+  constexpr std::size_t piece = 2048;
+  struct Piece {
+    std::size_t layer = 0, begin = 0, end = 0;
+    bool branches = false, last = false;
+  };
+#endif
 
   if(o.pairs)
     for(const auto& l : layers) pma_tool::write_pairs(std::cout, pma_tool::named_curves(l.parts, l.names));
@@ -1214,43 +1282,99 @@ int run(const Options& o)
   if(!o.geojson.empty()) {
     std::ofstream f = open_out(o.geojson);
 #ifdef CGAL_LINKED_WITH_TBB
-    if(layers.size() > 1 && threads > 1) {
-      // the polygons' features written on every thread, and put in the file
-      // in order (a whole-world file's GeoJSON is gigabytes: at most a few
-      // polygons' text at a time is held)
-      f << pma_tool::geojson_head;
-      bool first = true;
-      std::size_t next = 0;
-      in_arena([&]() {
-        tbb::parallel_pipeline(
-          std::size_t(4 * threads),
-          tbb::make_filter<void, std::size_t>(tbb::filter_mode::serial_in_order,
-                                              [&](tbb::flow_control& control) -> std::size_t {
-                                                if(next == layers.size()) control.stop();
-                                                return next++;
-                                              }) &
-            tbb::make_filter<std::size_t, std::string>(tbb::filter_mode::parallel,
-                                                       [&](std::size_t k) {
-                                                         std::ostringstream text;
-                                                         bool none = false;   // (each feature after ",\n")
-                                                         pma_tool::write_geojson_features(text, layers[k], o.tolerance, none);
-                                                         return text.str();
-                                                       }) &
-            tbb::make_filter<std::string, void>(tbb::filter_mode::serial_in_order, [&](const std::string& text) {
-              if(text.empty()) return;
-              const std::size_t skip = first ? 2 : 0;   // (the first feature's ",\n")
-              f.write(text.data() + skip, std::streamsize(text.size() - skip));
-              first = false;
-            }));
-      });
-      f << pma_tool::geojson_tail;
-    } else
+    // A polygon's box, and its branch points, are found when its first
+    // piece of each kind is due, and freed after its last piece is written.
+    std::vector<double> tolerances(layers.size(), 0), diagonals(layers.size(), 0);
+    std::vector<std::vector<pma_tool::Named_branch> > branches(layers.size());
+    f << pma_tool::geojson_head;
+    // the next piece: of the curves of layer `next_layer`, or of its branch
+    // points, from `next_item`
+    std::size_t next_layer = 0, next_item = 0;
+    bool next_branches = false;
+    in_arena([&]() {
+      write_in_pieces<Piece>(
+        f, threads, "", 2,   // (the first feature's ",\n")
+        [&](Piece& p) {
+          if(next_layer == layers.size()) return false;
+          p.layer = next_layer;
+          auto& l = layers[p.layer];
+          if(next_item == 0 && !next_branches) {   // (the polygon's first piece)
+            curves_due(p.layer);
+            diagonals[p.layer] = pma_tool::shape_box(*l.ma).diagonal();
+            tolerances[p.layer] = o.tolerance > 0 ? o.tolerance : 1e-6 * diagonals[p.layer];
+          }
+          if(next_item == 0 && next_branches) branches[p.layer] = pma_tool::geojson_branches(l, diagonals[p.layer]);
+          const std::size_t n = next_branches ? branches[p.layer].size() : l.parts.size();
+          p.branches = next_branches;
+          p.begin = next_item;
+          p.end = (std::min)(n, next_item + piece);
+          p.last = p.branches && p.end == n;
+          next_item = p.end == n ? 0 : p.end;
+          if(p.end == n) next_branches = !next_branches;
+          if(p.last) ++next_layer;
+          return true;
+        },
+        [&](const Piece& p) {
+          std::ostringstream text;
+          bool none = false;   // (each feature after ",\n")
+          if(p.branches)
+            pma_tool::write_geojson_branches(text, layers[p.layer], branches[p.layer], p.begin, p.end, none);
+          else
+            pma_tool::write_geojson_curves(text, layers[p.layer], tolerances[p.layer], p.begin, p.end, none);
+          return text.str();
+        },
+        [&](const Piece& p) {
+          if(!p.last) return;   // (every piece of the polygon is written once its last is)
+          std::vector<pma_tool::Named_branch>().swap(branches[p.layer]);
+          curves_done(p.layer);
+        });
+    });
+    f << pma_tool::geojson_tail;
+#else
+    pma_tool::write_geojson(f, layers, o.tolerance);
 #endif
-      pma_tool::write_geojson(f, layers, o.tolerance);
   }
   if(!o.wkt_out.empty()) {
     std::ofstream f = open_out(o.wkt_out);
+#ifdef CGAL_LINKED_WITH_TBB
+    // (as pma_tool::write_wkt_axis() writes it)
+    std::vector<double> tolerances(layers.size(), 0);
+    std::size_t next_layer = 0, next_item = 0;
+    bool any = false;
+    in_arena([&]() {
+      any = write_in_pieces<Piece>(
+        f, threads, "MULTILINESTRING (", 2,   // (the first polyline's ", ")
+        [&](Piece& p) {
+          if(next_layer == layers.size()) return false;
+          p.layer = next_layer;
+          auto& l = layers[p.layer];
+          if(next_item == 0) {
+            curves_due(p.layer);
+            if(!l.parts.empty()) tolerances[p.layer] = pma_tool::layer_tolerance(l, o.tolerance);
+          }
+          p.begin = next_item;
+          p.end = (std::min)(l.parts.size(), next_item + piece);
+          p.last = p.end == l.parts.size();
+          next_item = p.last ? 0 : p.end;
+          if(p.last) ++next_layer;
+          return true;
+        },
+        [&](const Piece& p) {
+          std::ostringstream text;
+          for(std::size_t k = p.begin; k < p.end; ++k) {
+            text << ", ";
+            pma_tool::write_wkt_points(text, layers[p.layer].parts[k].polyline(tolerances[p.layer]));
+          }
+          return text.str();
+        },
+        [&](const Piece& p) {
+          if(p.last) curves_done(p.layer);
+        });
+    });
+    f << (any ? ")\n" : "MULTILINESTRING EMPTY\n");
+#else
     pma_tool::write_wkt_axis(f, layers, o.tolerance);
+#endif
   }
   if(!o.centerline.empty()) {
     std::ofstream f = open_out(o.centerline);

@@ -151,16 +151,21 @@ void write_svg(std::ostream& out, const Medial_axis& ma, const std::string& titl
   write_svg(out, layers, title, width, show_input);
 }
 
-/// The features of one layer of write_geojson(), each after ",\n" unless
-/// `first` (which is then cleared): layers written apart (on several
-/// threads) and put together in order give write_geojson()'s text.
+/// The distance within which the polylines of the layer `l` follow its
+/// curves: `tolerance`, or where it is not positive, 1e-6 of the diagonal of
+/// the layer's shape.
 template <class Medial_axis>
-void write_geojson_features(std::ostream& out, const Axis_layer<Medial_axis>& l, double tolerance, bool& first)
+double layer_tolerance(const Axis_layer<Medial_axis>& l, double tolerance)
 {
-  auto number = [](double v) { return std::isfinite(v) ? format_double(v) : std::string("null"); };
-  const Medial_axis& ma = *l.ma;
-  const double tol = tolerance > 0 ? tolerance : 1e-6 * shape_box(ma).diagonal();
-  // the input feature's properties without the names of ours, as members to prepend
+  return tolerance > 0 ? tolerance : 1e-6 * shape_box(*l.ma).diagonal();
+}
+
+/// The members that each feature of the layer `l` starts its properties
+/// with: the input feature's properties without the names of ours, then
+/// `polygon` where there are several.
+template <class Medial_axis>
+std::string inherited_properties(const Axis_layer<Medial_axis>& l)
+{
   std::string inherited;
   if(!l.properties.empty()) {
     nlohmann::ordered_json props = nlohmann::ordered_json::parse(l.properties);
@@ -171,7 +176,30 @@ void write_geojson_features(std::ostream& out, const Axis_layer<Medial_axis>& l,
     }
   }
   if(l.polygon >= 0) inherited += "\"polygon\":" + std::to_string(l.polygon) + ",";
-  for(const auto& p : l.parts) {
+  return inherited;
+}
+
+/// The branch points of the layer `l` that write_geojson() lists, where
+/// `diagonal` is the diagonal of the box of its shape.
+template <class Medial_axis>
+std::vector<Named_branch> geojson_branches(const Axis_layer<Medial_axis>& l, double diagonal)
+{
+  return named_branches(*l.ma, l.names, 1e-12 * diagonal, l.keep);
+}
+
+/// The features of the curves `begin` to `end` (excluded) of the layer `l`
+/// of write_geojson(), sampled within `tol` (positive), each after ",\n"
+/// unless `first` (which is then cleared).  Layers, or pieces of a layer,
+/// written apart (on several threads) and put together in order give
+/// write_geojson()'s text.
+template <class Medial_axis>
+void write_geojson_curves(std::ostream& out, const Axis_layer<Medial_axis>& l, double tol, std::size_t begin,
+                          std::size_t end, bool& first)
+{
+  auto number = [](double v) { return std::isfinite(v) ? format_double(v) : std::string("null"); };
+  const std::string inherited = inherited_properties(l);
+  for(std::size_t k = begin; k < end; ++k) {
+    const auto& p = l.parts[k];
     std::string a = l.names(p.h.first_generator()), b = l.names(p.h.second_generator());
     if(b < a) std::swap(a, b);
     out << (first ? "" : ",\n") << "{\"type\":\"Feature\",\"properties\":{" << inherited
@@ -187,7 +215,18 @@ void write_geojson_features(std::ostream& out, const Axis_layer<Medial_axis>& l,
     out << "]}}";
     first = false;
   }
-  for(const auto& br : named_branches(ma, l.names, 1e-12 * shape_box(ma).diagonal(), l.keep)) {
+}
+
+/// The features of the branch points `begin` to `end` (excluded) of
+/// `branches`, those of the layer `l` (geojson_branches()), as
+/// write_geojson_curves() writes those of its curves.
+template <class Medial_axis>
+void write_geojson_branches(std::ostream& out, const Axis_layer<Medial_axis>& l,
+                            const std::vector<Named_branch>& branches, std::size_t begin, std::size_t end, bool& first)
+{
+  const std::string inherited = inherited_properties(l);
+  for(std::size_t k = begin; k < end; ++k) {
+    const Named_branch& br = branches[k];
     out << (first ? "" : ",\n") << "{\"type\":\"Feature\",\"properties\":{" << inherited
         << "\"kind\":\"branch\",\"generators\":[";
     for(std::size_t i = 0; i < br.generators.size(); ++i)
@@ -196,6 +235,16 @@ void write_geojson_features(std::ostream& out, const Axis_layer<Medial_axis>& l,
         << Double_text(br.x) << ',' << Double_text(br.y) << "]}}";
     first = false;
   }
+}
+
+/// The features of one layer of write_geojson() (see write_geojson_curves()).
+template <class Medial_axis>
+void write_geojson_features(std::ostream& out, const Axis_layer<Medial_axis>& l, double tolerance, bool& first)
+{
+  const double diagonal = shape_box(*l.ma).diagonal();
+  write_geojson_curves(out, l, tolerance > 0 ? tolerance : 1e-6 * diagonal, 0, l.parts.size(), first);
+  const std::vector<Named_branch> branches = geojson_branches(l, diagonal);
+  write_geojson_branches(out, l, branches, 0, branches.size(), first);
 }
 
 /// The text before and after the features of write_geojson().
@@ -223,40 +272,62 @@ void write_geojson(std::ostream& out, const std::vector<Axis_layer<Medial_axis> 
   out << geojson_tail;
 }
 
+/// Writes the points of a polyline as WKT: `(x y, x y, ...)`.
+inline void write_wkt_points(std::ostream& out, const std::vector<std::pair<double, double> >& pl)
+{
+  out << '(';
+  for(std::size_t i = 0; i < pl.size(); ++i)
+    out << (i ? ", " : "") << Double_text(pl[i].first) << ' ' << Double_text(pl[i].second);
+  out << ')';
+}
+
 /// Writes polylines as one WKT MULTILINESTRING.
 inline void write_wkt_lines(std::ostream& out, const std::vector<std::vector<std::pair<double, double> > >& lines,
                             bool multi = true)
 {
   out << (multi ? "MULTILINESTRING " : "LINESTRING ");
-  if(multi && !lines.empty()) out << '(';
-  bool first = true;
-  for(const auto& pl : lines) {
-    out << (first ? "(" : ", (");
-    for(std::size_t i = 0; i < pl.size(); ++i)
-      out << (i ? ", " : "") << Double_text(pl[i].first) << ' ' << Double_text(pl[i].second);
-    out << ')';
-    first = false;
-  }
   if(lines.empty()) {
     out << "EMPTY\n";
     return;
+  }
+  if(multi) out << '(';
+  bool first = true;
+  for(const auto& pl : lines) {
+    if(!first) out << ", ";
+    write_wkt_points(out, pl);
+    first = false;
   }
   out << (multi ? ")\n" : "\n");
 }
 
 /*!
 Writes the curves of the layers' medial axes as one WKT MULTILINESTRING,
-sampled within `tolerance` (default 1e-6 of each shape's diagonal).
+sampled within `tolerance` (default 1e-6 of each shape's diagonal).  Each
+polyline is written as soon as it is sampled: kept until all were, the
+polylines of a whole-world file were 1.4 GB of the peak (RESULTS.md,
+seventy-first session).
 */
 template <class Medial_axis>
 void write_wkt_axis(std::ostream& out, const std::vector<Axis_layer<Medial_axis> >& layers, double tolerance = -1)
 {
-  std::vector<std::vector<std::pair<double, double> > > lines;
-  for(const auto& l : layers) {
-    const double tol = tolerance > 0 ? tolerance : 1e-6 * shape_box(*l.ma).diagonal();
-    for(const auto& p : l.parts) lines.push_back(p.polyline(tol));
+  bool any = false;
+  for(const auto& l : layers) any = any || !l.parts.empty();
+  if(!any) {
+    out << "MULTILINESTRING EMPTY\n";
+    return;
   }
-  write_wkt_lines(out, lines);
+  out << "MULTILINESTRING (";
+  bool first = true;
+  for(const auto& l : layers) {
+    if(l.parts.empty()) continue;
+    const double tol = layer_tolerance(l, tolerance);
+    for(const auto& p : l.parts) {
+      if(!first) out << ", ";
+      write_wkt_points(out, p.polyline(tol));
+      first = false;
+    }
+  }
+  out << ")\n";
 }
 
 } // namespace pma_tool
