@@ -1240,6 +1240,7 @@ int run(const Options& o)
 #endif
   if(listings > 0 && !curves_when_written)
     in_arena([&]() { for_each_polygon(jobs_largest_first, [&](std::size_t k) { layers[k].parts = curves_of(k); }); });
+#ifdef CGAL_LINKED_WITH_TBB
   // the curves of polygon k for an output written in pieces, at its first
   // piece; freed after its last
   auto curves_due = [&](std::size_t k) {
@@ -1248,7 +1249,18 @@ int run(const Options& o)
   auto curves_done = [&](std::size_t k) {
     if(curves_when_written) std::vector<pma_tool::Axis_part<Medial_axis> >().swap(layers[k].parts);
   };
-#ifdef CGAL_LINKED_WITH_TBB
+  // the diagonal of each polygon's shape (the default tolerance of the
+  // polylines, and the distance within which the GeoJSON merges branch
+  // points), on every thread
+  std::vector<double> diagonals;
+  if(!o.geojson.empty() || !o.wkt_out.empty()) {
+    diagonals.assign(layers.size(), 0);
+    in_arena([&]() {
+      for_each_polygon(jobs_largest_first,
+                       [&](std::size_t k) { diagonals[k] = pma_tool::shape_box(*layers[k].ma).diagonal(); });
+    });
+  }
+  auto tolerance_of = [&](std::size_t k) { return o.tolerance > 0 ? o.tolerance : 1e-6 * diagonals[k]; };
   // The outputs that list curves in pieces of at most `piece` curves or
   // branch points, formatted on every thread and written in order, so that
   // at most a few pieces' text is held at a time, and a large polygon is
@@ -1282,9 +1294,8 @@ int run(const Options& o)
   if(!o.geojson.empty()) {
     std::ofstream f = open_out(o.geojson);
 #ifdef CGAL_LINKED_WITH_TBB
-    // A polygon's box, and its branch points, are found when its first
-    // piece of each kind is due, and freed after its last piece is written.
-    std::vector<double> tolerances(layers.size(), 0), diagonals(layers.size(), 0);
+    // A polygon's branch points are found when its first piece of them is
+    // due, and freed after its last piece is written.
     std::vector<std::vector<pma_tool::Named_branch> > branches(layers.size());
     f << pma_tool::geojson_head;
     // the next piece: of the curves of layer `next_layer`, or of its branch
@@ -1298,11 +1309,7 @@ int run(const Options& o)
           if(next_layer == layers.size()) return false;
           p.layer = next_layer;
           auto& l = layers[p.layer];
-          if(next_item == 0 && !next_branches) {   // (the polygon's first piece)
-            curves_due(p.layer);
-            diagonals[p.layer] = pma_tool::shape_box(*l.ma).diagonal();
-            tolerances[p.layer] = o.tolerance > 0 ? o.tolerance : 1e-6 * diagonals[p.layer];
-          }
+          if(next_item == 0 && !next_branches) curves_due(p.layer);   // (the polygon's first piece)
           if(next_item == 0 && next_branches) branches[p.layer] = pma_tool::geojson_branches(l, diagonals[p.layer]);
           const std::size_t n = next_branches ? branches[p.layer].size() : l.parts.size();
           p.branches = next_branches;
@@ -1320,7 +1327,7 @@ int run(const Options& o)
           if(p.branches)
             pma_tool::write_geojson_branches(text, layers[p.layer], branches[p.layer], p.begin, p.end, none);
           else
-            pma_tool::write_geojson_curves(text, layers[p.layer], tolerances[p.layer], p.begin, p.end, none);
+            pma_tool::write_geojson_curves(text, layers[p.layer], tolerance_of(p.layer), p.begin, p.end, none);
           return text.str();
         },
         [&](const Piece& p) {
@@ -1338,7 +1345,6 @@ int run(const Options& o)
     std::ofstream f = open_out(o.wkt_out);
 #ifdef CGAL_LINKED_WITH_TBB
     // (as pma_tool::write_wkt_axis() writes it)
-    std::vector<double> tolerances(layers.size(), 0);
     std::size_t next_layer = 0, next_item = 0;
     bool any = false;
     in_arena([&]() {
@@ -1348,10 +1354,7 @@ int run(const Options& o)
           if(next_layer == layers.size()) return false;
           p.layer = next_layer;
           auto& l = layers[p.layer];
-          if(next_item == 0) {
-            curves_due(p.layer);
-            if(!l.parts.empty()) tolerances[p.layer] = pma_tool::layer_tolerance(l, o.tolerance);
-          }
+          if(next_item == 0) curves_due(p.layer);
           p.begin = next_item;
           p.end = (std::min)(l.parts.size(), next_item + piece);
           p.last = p.end == l.parts.size();
@@ -1363,7 +1366,7 @@ int run(const Options& o)
           std::ostringstream text;
           for(std::size_t k = p.begin; k < p.end; ++k) {
             text << ", ";
-            pma_tool::write_wkt_points(text, layers[p.layer].parts[k].polyline(tolerances[p.layer]));
+            pma_tool::write_wkt_points(text, layers[p.layer].parts[k].polyline(tolerance_of(p.layer)));
           }
           return text.str();
         },

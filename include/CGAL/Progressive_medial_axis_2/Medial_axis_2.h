@@ -814,17 +814,25 @@ public:
     // The outer boundary holds the smallest point (x, then y): every hole
     // lies strictly inside it.  This is exact and needs no area.
     // (Where a hole touches it there, the counter-clockwise cycle is the outer one.)
-    // (The outer candidate's smallest point is kept: found again for each
-    // cycle, it made this quadratic, 58 s of a GeoJSON output of a polygon of
-    // 191,274 holes; RESULTS.md, seventy-first session.)
+    // (The candidate's smallest point is kept, and its orientation once a
+    // tie needs it, -1 before: found again for each cycle, they made this
+    // quadratic, 58 s of a GeoJSON output of a polygon of 191,274 holes;
+    // RESULTS.md, seventy-first session.)
     std::size_t outer = 0;
     int outer_min = cycles.empty() ? 0 : min_point(cycles[0]);
+    int outer_ccw = -1;
     for(std::size_t i = 1; i < cycles.size(); ++i) {
       const int a = min_point(cycles[i]);
-      if(lexicographically_smaller(a, outer_min) ||
-         (!lexicographically_smaller(outer_min, a) && !counterclockwise(cycles[outer]) && counterclockwise(cycles[i]))) {
+      if(lexicographically_smaller(a, outer_min)) {
         outer = i;
         outer_min = a;
+        outer_ccw = -1;
+      } else if(!lexicographically_smaller(outer_min, a)) {
+        if(outer_ccw < 0) outer_ccw = counterclockwise(cycles[outer]) ? 1 : 0;
+        if(outer_ccw == 0 && counterclockwise(cycles[i])) {
+          outer = i;
+          outer_ccw = 1;
+        }
       }
     }
     if(!cycles.empty()) std::swap(cycles[0], cycles[outer]);
