@@ -49,6 +49,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -1260,7 +1261,7 @@ int run(const Options& o)
                        [&](std::size_t k) { diagonals[k] = pma_tool::shape_box(*layers[k].ma).diagonal(); });
     });
   }
-  auto tolerance_of = [&](std::size_t k) { return o.tolerance > 0 ? o.tolerance : 1e-6 * diagonals[k]; };
+  auto tolerance_of = [&](std::size_t k) { return pma_tool::polyline_tolerance(o.tolerance, diagonals[k]); };
   // The outputs that list curves in pieces of at most `piece` curves or
   // branch points, formatted on every thread and written in order, so that
   // at most a few pieces' text is held at a time, and a large polygon is
@@ -1271,6 +1272,14 @@ int run(const Options& o)
   struct Piece {
     std::size_t layer = 0, begin = 0, end = 0;
     bool branches = false, last = false;
+  };
+  // the items of `p`: the next `piece` of the `n` from `next_item`, which
+  // moves on to them (back to 0 after the last); whether they end the n
+  auto take_items = [&](Piece& p, std::size_t& next_item, std::size_t n) {
+    p.begin = next_item;
+    p.end = (std::min)(n, next_item + piece);
+    next_item = p.end == n ? 0 : p.end;
+    return p.end == n;
   };
 #endif
 
@@ -1311,13 +1320,10 @@ int run(const Options& o)
           auto& l = layers[p.layer];
           if(next_item == 0 && !next_branches) curves_due(p.layer);   // (the polygon's first piece)
           if(next_item == 0 && next_branches) branches[p.layer] = pma_tool::geojson_branches(l, diagonals[p.layer]);
-          const std::size_t n = next_branches ? branches[p.layer].size() : l.parts.size();
           p.branches = next_branches;
-          p.begin = next_item;
-          p.end = (std::min)(n, next_item + piece);
-          p.last = p.branches && p.end == n;
-          next_item = p.end == n ? 0 : p.end;
-          if(p.end == n) next_branches = !next_branches;
+          const bool ended = take_items(p, next_item, next_branches ? branches[p.layer].size() : l.parts.size());
+          p.last = p.branches && ended;
+          if(ended) next_branches = !next_branches;
           if(p.last) ++next_layer;
           return true;
         },
@@ -1349,23 +1355,20 @@ int run(const Options& o)
     bool any = false;
     in_arena([&]() {
       any = write_in_pieces<Piece>(
-        f, threads, "MULTILINESTRING (", 2,   // (the first polyline's ", ")
+        f, threads, pma_tool::wkt_axis_head, std::strlen(pma_tool::wkt_axis_separator),   // (the first polyline's)
         [&](Piece& p) {
           if(next_layer == layers.size()) return false;
           p.layer = next_layer;
           auto& l = layers[p.layer];
           if(next_item == 0) curves_due(p.layer);
-          p.begin = next_item;
-          p.end = (std::min)(l.parts.size(), next_item + piece);
-          p.last = p.end == l.parts.size();
-          next_item = p.last ? 0 : p.end;
+          p.last = take_items(p, next_item, l.parts.size());
           if(p.last) ++next_layer;
           return true;
         },
         [&](const Piece& p) {
           std::ostringstream text;
           for(std::size_t k = p.begin; k < p.end; ++k) {
-            text << ", ";
+            text << pma_tool::wkt_axis_separator;
             pma_tool::write_wkt_points(text, layers[p.layer].parts[k].polyline(tolerance_of(p.layer)));
           }
           return text.str();
@@ -1374,7 +1377,7 @@ int run(const Options& o)
           if(p.last) curves_done(p.layer);
         });
     });
-    f << (any ? ")\n" : "MULTILINESTRING EMPTY\n");
+    f << (any ? pma_tool::wkt_axis_tail : pma_tool::wkt_axis_empty);
 #else
     pma_tool::write_wkt_axis(f, layers, o.tolerance);
 #endif
@@ -1384,7 +1387,7 @@ int run(const Options& o)
     std::vector<std::vector<std::pair<double, double> > > lines;
     bool single = true;
     for(const Job& job : jobs) {
-      const double tol = o.tolerance > 0 ? o.tolerance : 1e-6 * pma_tool::shape_box(*job.ma).diagonal();
+      const double tol = pma_tool::shape_tolerance(*job.ma, o.tolerance);
       for(auto& l : job.center->polylines(tol)) lines.push_back(std::move(l));
       single = single && !(job.center->paths().size() == 1 && job.center->paths()[0].closed);
     }

@@ -151,13 +151,20 @@ void write_svg(std::ostream& out, const Medial_axis& ma, const std::string& titl
   write_svg(out, layers, title, width, show_input);
 }
 
-/// The distance within which the polylines of the layer `l` follow its
-/// curves: `tolerance`, or where it is not positive, 1e-6 of the diagonal of
-/// the layer's shape.
-template <class Medial_axis>
-double layer_tolerance(const Axis_layer<Medial_axis>& l, double tolerance)
+/// The distance within which the polylines of a shape of box diagonal
+/// `diagonal` follow its curves: `tolerance`, or where it is not positive,
+/// 1e-6 of the diagonal.
+inline double polyline_tolerance(double tolerance, double diagonal)
 {
-  return tolerance > 0 ? tolerance : 1e-6 * shape_box(*l.ma).diagonal();
+  return tolerance > 0 ? tolerance : 1e-6 * diagonal;
+}
+
+/// polyline_tolerance() of the shape of `ma` (its box found only where
+/// `tolerance` is not positive).
+template <class Medial_axis>
+double shape_tolerance(const Medial_axis& ma, double tolerance)
+{
+  return tolerance > 0 ? tolerance : polyline_tolerance(tolerance, shape_box(ma).diagonal());
 }
 
 /// The members that each feature of the layer `l` starts its properties
@@ -242,7 +249,7 @@ template <class Medial_axis>
 void write_geojson_features(std::ostream& out, const Axis_layer<Medial_axis>& l, double tolerance, bool& first)
 {
   const double diagonal = shape_box(*l.ma).diagonal();
-  write_geojson_curves(out, l, tolerance > 0 ? tolerance : 1e-6 * diagonal, 0, l.parts.size(), first);
+  write_geojson_curves(out, l, polyline_tolerance(tolerance, diagonal), 0, l.parts.size(), first);
   const std::vector<Named_branch> branches = geojson_branches(l, diagonal);
   write_geojson_branches(out, l, branches, 0, branches.size(), first);
 }
@@ -300,6 +307,13 @@ inline void write_wkt_lines(std::ostream& out, const std::vector<std::vector<std
   out << (multi ? ")\n" : "\n");
 }
 
+/// The text of write_wkt_axis(): before the first polyline, before each
+/// other one (write_wkt_points()), after the last, and without any.
+constexpr const char* wkt_axis_head = "MULTILINESTRING (";
+constexpr const char* wkt_axis_separator = ", ";
+constexpr const char* wkt_axis_tail = ")\n";
+constexpr const char* wkt_axis_empty = "MULTILINESTRING EMPTY\n";
+
 /*!
 Writes the curves of the layers' medial axes as one WKT MULTILINESTRING,
 sampled within `tolerance` (default 1e-6 of each shape's diagonal).  Each
@@ -313,21 +327,21 @@ void write_wkt_axis(std::ostream& out, const std::vector<Axis_layer<Medial_axis>
   bool any = false;
   for(const auto& l : layers) any = any || !l.parts.empty();
   if(!any) {
-    out << "MULTILINESTRING EMPTY\n";
+    out << wkt_axis_empty;
     return;
   }
-  out << "MULTILINESTRING (";
+  out << wkt_axis_head;
   bool first = true;
   for(const auto& l : layers) {
     if(l.parts.empty()) continue;
-    const double tol = layer_tolerance(l, tolerance);
+    const double tol = shape_tolerance(*l.ma, tolerance);
     for(const auto& p : l.parts) {
-      if(!first) out << ", ";
+      if(!first) out << wkt_axis_separator;
       write_wkt_points(out, p.polyline(tol));
       first = false;
     }
   }
-  out << ")\n";
+  out << wkt_axis_tail;
 }
 
 } // namespace pma_tool
