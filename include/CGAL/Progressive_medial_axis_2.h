@@ -685,7 +685,9 @@ one_shot_medial_axis(const std::vector<std::vector<typename Traits::Kernel::Poin
     split_seconds = seconds_since(t0);
   }
   auto data = std::make_shared<Data>();
-  set_points(*data, rings, traits.orientation_2_object());
+  // (a split triangulation's cut is found only where no two points are at
+  // one place: then no corners are to be linked where rings touch)
+  set_points(*data, rings, traits.orientation_2_object(), split ? POINTS_DISTINCT : POINTS_MAY_REPEAT);
   stats.input_vertices = data->points.size();
   stats.holes = rings.size() - 1;
   // the rings, for the drivers that start again from them (rebuilt once,
