@@ -393,6 +393,44 @@ void lobes()
                                 << cycles.size() << " cycles)");
 }
 
+// The half-edge structure's flags of edges of length zero, an array made
+// at the first such edge: appending a structure with flags to one without
+// and the other way, a rollback of the first flag set in a journal, and an
+// edge reused after deletion.
+void zero_length_flags()
+{
+  typedef CGAL::Progressive_medial_axes::internal::Halfedge_structure<Epick::Point_2, double> Hds;
+  Hds a, b, c, d;
+  const int e0 = a.new_edge(0, 0), e1 = a.new_edge(0, 0);
+  const int f0 = b.new_edge(0, 0), f1 = b.new_edge(0, 0);
+  b.set_zero_length(f1 + 1, true);
+  CHECK(!a.is_zero_length(e0) && !a.is_zero_length(e1 + 1) && !b.is_zero_length(f0) && b.is_zero_length(f1),
+        "zero-length flags: set on one half-edge, read on its twin");
+  const auto o = a.append(b);
+  CHECK(!a.is_zero_length(e0) && !a.is_zero_length(e1) && !a.is_zero_length(f0 + o.halfedge) &&
+          a.is_zero_length(f1 + o.halfedge + 1),
+        "zero-length flags: a structure with flags appended to one without");
+  const int g0 = c.new_edge(0, 0);
+  const auto p = a.append(c);
+  CHECK(!a.is_zero_length(g0 + p.halfedge) && a.is_zero_length(f1 + o.halfedge) && !a.is_zero_length(e1),
+        "zero-length flags: a structure without flags appended to one with");
+  const int h0 = d.new_edge(0, 0);
+  d.begin_journal();
+  const int h1 = d.new_edge(0, 0);
+  d.set_zero_length(h0, true);
+  d.set_zero_length(h1, true);
+  CHECK(d.is_zero_length(h0) && d.is_zero_length(h1), "zero-length flags: set in a journal");
+  d.rollback();
+  d.end_journal();
+  const int h2 = d.new_edge(0, 0);
+  CHECK(!d.is_zero_length(h0) && h2 == h1 && !d.is_zero_length(h2),
+        "zero-length flags: the first flags rolled back, and a pair made after the rollback");
+  d.set_zero_length(h2, true);
+  d.delete_edge(h2);
+  const int h3 = d.new_edge(0, 0);
+  CHECK(h3 == h2 && !d.is_zero_length(h3) && !d.is_zero_length(h0), "zero-length flags: an edge reused");
+}
+
 // The progressive object: steps, current_shape() with its holes at every
 // step, release.
 void progressive(const std::string& tool, const std::string& data)
@@ -635,6 +673,7 @@ int main(int argc, char** argv)
   radii_and_rings<CGAL::Progressive_medial_axis_traits_2<CGAL::Simple_cartesian<double> > >("double model");
   curves();
   lobes();
+  zero_length_flags();
   progressive(argc > 2 ? argv[1] : "", argc > 2 ? argv[2] : "");
   accuracy();
   bad_input();

@@ -173,9 +173,13 @@ public:
   /// Whether the edge of `h` has length zero: its two end vertices are one
   /// point, where four or more generators meet (set by the merge, which
   /// knows it exactly: the edge was opened and closed at equal event times).
-  bool is_zero_length(int h) const { return zero_length_[h >> 1] != 0; }
+  bool is_zero_length(int h) const { return !zero_length_.empty() && zero_length_[h >> 1] != 0; }
   void set_zero_length(int h, bool z)
   {
+    if(zero_length_.empty()) {
+      if(!z) return;
+      make_zero_length_flags();
+    }
     record(log_zero_, zero_length_, h >> 1, saved_.he / 2);
     zero_length_[h >> 1] = z ? 1 : 0;
   }
@@ -208,13 +212,13 @@ public:
       right.face = right_face;
       halfedges_.push_back(left);
       halfedges_.push_back(right);
-      zero_length_.push_back(0);
+      if(!zero_length_.empty()) zero_length_.push_back(0);
       return h;
     }
     const int h = pop(free_edges_, FREE_EDGES);
     he(h) = Halfedge();
     he(h + 1) = Halfedge();
-    set_zero_length(h, false);
+    if(is_zero_length(h)) set_zero_length(h, false);
     he(h).face = left_face;
     he(h + 1).face = right_face;
     return h;
@@ -331,7 +335,8 @@ public:
       return false;
     int t1 = twin(h1), t2 = twin(h2);
     int w = target(h2);
-    set_zero_length(h1, is_zero_length(h1) && is_zero_length(h2));
+    if(is_zero_length(h1) && !is_zero_length(h2))
+      set_zero_length(h1, false);
     he(h1).vertex = w;
     link(h1, next(h2));
     link(prev(t2), t1);
@@ -384,7 +389,7 @@ public:
     undo(log_f_, faces_);
     undo(log_zero_, zero_length_);
     halfedges_.resize(saved_.he);
-    zero_length_.resize(saved_.he / 2);
+    if(!zero_length_.empty()) zero_length_.resize(saved_.he / 2);
     vertices_.resize(saved_.v);
     disks_.resize(saved_.d);
     faces_.resize(saved_.f);
@@ -434,6 +439,12 @@ public:
     require_indexable(halfedges_.size() + other.halfedges_.size());
     const Offsets o{int(halfedges_.size()), int(vertices_.size()), int(faces_.size()), int(disks_.size())};
     auto shift = [](int& i, int by) { if(i >= 0) i += by; };
+    if(!zero_length_.empty() || !other.zero_length_.empty()) {   // (see zero_length_)
+      zero_length_.resize(halfedges_.size() / 2, 0);
+      zero_length_.insert(zero_length_.end(), other.zero_length_.begin(), other.zero_length_.end());
+      zero_length_.resize((halfedges_.size() + other.halfedges_.size()) / 2, 0);
+    }
+    release(other.zero_length_);
     halfedges_.reserve(halfedges_.size() + other.halfedges_.size());
     for(Halfedge h : other.halfedges_) {
       shift(h.next, o.halfedge);
@@ -443,8 +454,6 @@ public:
       halfedges_.push_back(h);
     }
     release(other.halfedges_);
-    zero_length_.insert(zero_length_.end(), other.zero_length_.begin(), other.zero_length_.end());
-    release(other.zero_length_);
     vertices_.reserve(vertices_.size() + other.vertices_.size());
     for(Vertex v : other.vertices_) {
       if(v.halfedge >= 0) v.halfedge = v.halfedge + o.halfedge;   // (bit-fields)
@@ -538,8 +547,10 @@ private:
     vertices_.reserve(vertices);
     disks_.reserve(disks);
     halfedges_.reserve(halfedges);
-    zero_length_.reserve(halfedges / 2);
   }
+
+  // (out of line: once per structure at most)
+  CGAL_PMA2_NOINLINE void make_zero_length_flags() { zero_length_.assign(halfedges_.size() / 2, 0); }
 
   enum Free_list { FREE_EDGES, FREE_VERTICES, FREE_DISKS, FREE_FACES };
   struct Free_change {
@@ -624,7 +635,12 @@ private:
   std::vector<Vertex> vertices_;
   std::vector<Disk> disks_;
   std::vector<Face> faces_;
-  std::vector<char> zero_length_;   // per edge (half-edge pair)
+  // Per edge (half-edge pair), whether it has length zero; empty while no
+  // edge has (else as long as the pairs).  Only four or more generators on
+  // one circle make such edges: the axes of real outlines have none, and
+  // save the array (3.2 MB of a plate of 100,000 holes) and its upkeep in
+  // new_edge() (RESULTS.md, seventy-fifth session).
+  std::vector<char> zero_length_;
   std::vector<int> free_edges_, free_vertices_, free_disks_, free_faces_;
   std::vector<int> pending_;
 
