@@ -637,9 +637,9 @@ private:
   std::vector<Face> faces_;
   // Per edge (half-edge pair), whether it has length zero; empty while no
   // edge has (else as long as the pairs).  Only four or more generators on
-  // one circle make such edges: the axes of real outlines have none, and
-  // save the array (3.2 MB of a plate of 100,000 holes) and its upkeep in
-  // new_edge() (RESULTS.md, seventy-fifth session).
+  // one circle make such edges: an axis without them (a plate of 100,000
+  // holes) saves the array (3.2 MB there) and its upkeep in new_edge()
+  // (RESULTS.md, seventy-fifth session; c1m_CHN_0's axis has some).
   std::vector<char> zero_length_;
   std::vector<int> free_edges_, free_vertices_, free_disks_, free_faces_;
   std::vector<int> pending_;
