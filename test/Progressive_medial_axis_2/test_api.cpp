@@ -431,6 +431,70 @@ void zero_length_flags()
   CHECK(h3 == h2 && !d.is_zero_length(h3) && !d.is_zero_length(h0), "zero-length flags: an edge reused");
 }
 
+// The half-edge structure's check of itself (is_valid()): it accepts the
+// axis of a triangle, built as the engine builds it, and refuses each of
+// five corruptions of it.
+void structure_validity()
+{
+  typedef CGAL::Progressive_medial_axes::internal::Halfedge_structure<Epick::Point_2, double> Hds;
+  using CGAL::Progressive_medial_axes::internal::OUTSIDE;
+  struct Triangle {
+    Hds hds;
+    int V[3], F[3], I, b[3], s[3];
+    Triangle()
+    {
+      for(int i = 0; i < 3; ++i) V[i] = hds.new_corner(i);
+      for(int i = 0; i < 3; ++i) F[i] = hds.new_face(false, i, (i + 1) % 3);   // side V[i] -> V[i+1]
+      I = hds.new_pending_vertex(F[0], F[1], F[2]);
+      for(int i = 0; i < 3; ++i) {
+        b[i] = hds.new_edge(F[i], OUTSIDE);   // V[i] -> V[i+1]
+        hds.he(b[i]).vertex = V[(i + 1) % 3];
+        hds.he(b[i] ^ 1).vertex = V[i];
+      }
+      for(int i = 0; i < 3; ++i) {
+        s[i] = hds.new_edge(F[(i + 2) % 3], F[i]);   // V[i] -> I, F[i-1] on its left
+        hds.he(s[i]).vertex = I;
+        hds.he(s[i] ^ 1).vertex = V[i];
+      }
+      for(int i = 0; i < 3; ++i) {   // F[i]: b[i], s[i+1] up to I, twin(s[i]) down to V[i]
+        const int j = (i + 1) % 3;
+        hds.link(b[i], s[j]);
+        hds.link(s[j], s[i] ^ 1);
+        hds.link(s[i] ^ 1, b[i]);
+      }
+      for(int i = 0; i < 3; ++i) hds.link(b[(i + 1) % 3] ^ 1, b[i] ^ 1);   // outside, clockwise
+      for(int i = 0; i < 3; ++i) {
+        hds.face(F[i]).halfedge = b[i];
+        hds.vertex(V[i]).halfedge = b[(i + 2) % 3];
+      }
+      hds.vertex(I).halfedge = s[0];
+    }
+  };
+  std::string why;
+  {
+    Triangle t;
+    CHECK(t.hds.is_valid(&why), "structure check: a triangle's axis is valid: " << why);
+  }
+  auto refused = [&](const char* what, auto corrupt) {
+    Triangle t;
+    corrupt(t);
+    why.clear();
+    CHECK(!t.hds.is_valid(&why) && !why.empty(), "structure check: " << what << " is refused");
+  };
+  refused("next without its prev", [](Triangle& t) { t.hds.he(t.b[0]).next = t.b[1]; });
+  refused("a half-edge on another face than its next", [](Triangle& t) { t.hds.he(t.b[0]).face = t.F[1]; });
+  refused("a face whose half-edge is another's", [](Triangle& t) { t.hds.face(t.F[0]).halfedge = t.b[1]; });
+  refused("a vertex whose half-edge ends elsewhere", [](Triangle& t) { t.hds.vertex(t.I).halfedge = t.b[0]; });
+  refused("a deleted vertex still in use", [](Triangle& t) { t.hds.delete_vertex(t.I); });
+  refused("a half-edge ending where its next does not start", [](Triangle& t) { t.hds.he(t.s[0]).vertex = t.V[1]; });
+  // and the axes of every step of a progressive run
+  CGAL::Progressive_medial_axis_2<> pma(pma_test::random_polygon_with_holes(5, 40, 4));
+  std::size_t invalid = 0;
+  do invalid += !pma.medial_axis().is_valid(true);
+  while(pma.refine());
+  CHECK(invalid == 0, "structure check: " << invalid << " steps of a progressive run with an invalid structure");
+}
+
 // The progressive object: steps, current_shape() with its holes at every
 // step, release.
 void progressive(const std::string& tool, const std::string& data)
@@ -674,6 +738,7 @@ int main(int argc, char** argv)
   curves();
   lobes();
   zero_length_flags();
+  structure_validity();
   progressive(argc > 2 ? argv[1] : "", argc > 2 ? argv[2] : "");
   accuracy();
   bad_input();

@@ -294,6 +294,9 @@ public:
                         const std::vector<std::vector<std::pair<double, double> > >& shape,
                         double diagonal, int holes, bool topology = true)
   {
+    // The half-edge structure is valid (linked both ways, one cycle a cell,
+    // one fan a vertex), whatever the oracle says of the curves.
+    CHECK(ma.is_valid(true), what << " step " << step << ": the half-edge structure is not valid");
     // The medial axis is connected and has one independent cycle per hole.
     typedef typename MA::Vertex_handle Vertex;
     std::size_t nv = 0, ne = 0;

@@ -35,6 +35,7 @@
 #include <cmath>
 #include <cstddef>
 #include <functional>
+#include <iostream>
 #include <iterator>
 #include <limits>
 #include <memory>
@@ -770,6 +771,41 @@ public:
   std::size_t number_of_vertices() const { return count(vertices()); }
   std::size_t number_of_edges() const { return count(edges()); }
   std::size_t number_of_faces() const { return count(faces()); }
+
+  /// Whether the half-edge structure under the axis is combinatorially
+  /// valid, as `Triangulation_2::is_valid()` checks a triangulation: the
+  /// boundary of every cell is one cycle of half-edges, the half-edges
+  /// around every vertex are one fan, `next()` and `prev()` are each
+  /// other's inverse, deleted elements are all on their free lists, and
+  /// cells and polygon vertices name points of the input polygon.  With
+  /// `verbose`, the first problem found is written to `std::cerr` in one
+  /// line.  Linear in the size of the axis; for tests and debugging (no
+  /// computation calls it).
+  bool is_valid(bool verbose = false) const
+  {
+    if(!d_) return true;
+    std::string why;
+    bool ok = hds().is_valid(&why);
+    const long n = long(d_->points.size());
+    for(std::size_t v = 0; ok && v < hds().vertex_capacity(); ++v) {
+      const auto& x = hds().vertex(int(v));
+      if(x.alive && x.is_corner() && x.input_point() >= n) {
+        ok = false;
+        why = "vertex " + std::to_string(v) + " is at input point " + std::to_string(x.input_point()) + " of " +
+              std::to_string(n);
+      }
+    }
+    for(std::size_t f = 0; ok && f < hds().face_capacity(); ++f) {
+      const auto& x = hds().face(int(f));
+      if(x.alive && (x.p0 < 0 || x.p0 >= n || x.p1 < 0 || x.p1 >= n)) {
+        ok = false;
+        why = "cell " + std::to_string(f) + " has input points " + std::to_string(x.p0) + " and " +
+              std::to_string(x.p1) + " of " + std::to_string(n);
+      }
+    }
+    if(!ok && verbose) std::cerr << "Medial_axis_2::is_valid(): " << why << "\n";
+    return ok;
+  }
 
   // ---- the shape and its polygon ----
 

@@ -14,7 +14,8 @@
 // The double model (traits over Simple_cartesian<double>) must give the
 // same curves in one shot and by boundary evolution, up to curves shorter
 // than 1e-9 of the coordinates, unless it reports the events it forced
-// (statistics' anomalies): it may be wrong only where it says so.
+// (statistics' anomalies): it may be wrong only where it says so.  Every
+// axis made must pass Medial_axis_2::is_valid() (the half-edge structure).
 // Built with AddressSanitizer and UBSan; any crash or difference is a failure.
 //
 //   fuzz_engine [libFuzzer options] [CORPUS_DIR ...]
@@ -99,6 +100,17 @@ Curves without_tiny(const Curves& a, double tiny)
   return out;
 }
 
+// Stops at an axis whose half-edge structure is not valid (is_valid()
+// writes the first problem found).
+template <class Axis>
+void require_valid(const char* what, const Axis& axis)
+{
+  if(!axis.is_valid(true)) {
+    std::fprintf(stderr, "%s: the half-edge structure is not valid\n", what);
+    __builtin_trap();
+  }
+}
+
 void print_difference(const char* what, const Curves& a, const Curves& b)
 {
   std::fprintf(stderr, "%s differ: %zu and %zu curves\n", what, a.size(), b.size());
@@ -137,6 +149,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const auto one_shot = CGAL::medial_axis_2(rings);
   CGAL::Progressive_medial_axis_2<> pma(rings);
   while(pma.refine()) {}
+  require_valid("one-shot", one_shot);
+  require_valid("region growing", pma.medial_axis());
   const auto a = curves(one_shot), b = curves(pma.medial_axis());
   double scale = 1;
   for(const auto& r : rings)
@@ -147,6 +161,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   }
   CGAL::Progressive_medial_axis_2<> evolved(rings, CGAL::BOUNDARY_EVOLUTION);
   while(evolved.refine()) {}
+  require_valid("boundary evolution", evolved.medial_axis());
   const auto e = curves(evolved.medial_axis());
   if(!same_curves(a, e, scale)) {
     print_difference("one-shot and boundary evolution", a, e);
@@ -162,13 +177,16 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       for(const auto& p : r) double_rings.back().emplace_back(p.x(), p.y());
     }
     const Curves exact = without_tiny(a, 1e-9 * scale);
-    const Curves d = without_tiny(curves(CGAL::medial_axis_2(double_rings, Double_traits())), 1e-9 * scale);
+    const auto double_one_shot = CGAL::medial_axis_2(double_rings, Double_traits());
+    require_valid("the double model's one-shot", double_one_shot);
+    const Curves d = without_tiny(curves(double_one_shot), 1e-9 * scale);
     if(!same_curves(exact, d, scale)) {
       print_difference("one-shot and the double model's one-shot", exact, d);
       __builtin_trap();
     }
     CGAL::Progressive_medial_axis_2<Double_traits> double_evolved(double_rings, CGAL::BOUNDARY_EVOLUTION);
     while(double_evolved.refine()) {}
+    require_valid("the double model's boundary evolution", double_evolved.medial_axis());
     const Curves de = without_tiny(curves(double_evolved.medial_axis()), 1e-9 * scale);
     if(double_evolved.statistics().anomalies == 0 && !same_curves(exact, de, scale)) {
       print_difference("one-shot and the double model's boundary evolution", exact, de);
@@ -191,6 +209,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     }
     try {
       const auto u = CGAL::medial_axis_union_2(CGAL::medial_axis_2(A), CGAL::medial_axis_2(B));
+      require_valid("union", u);
       const Curves c = curves_by_points(u), w = curves_by_points(one_shot);
       if(!same_curves(c, w, scale)) {
         print_difference("union and whole", c, w);

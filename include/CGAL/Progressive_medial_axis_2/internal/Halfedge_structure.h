@@ -23,6 +23,7 @@
 #include <cmath>
 #include <cstddef>
 #include <stdexcept>
+#include <string>
 #include <type_traits>
 #include <utility>
 #include <vector>
@@ -479,6 +480,112 @@ public:
     else
       other = Halfedge_structure();
     return o;
+  }
+
+  /// Whether the structure is combinatorially valid, between two operations
+  /// (a merge's open edges have no end vertex yet):
+  /// - the free lists hold exactly the deleted edges, vertices and faces,
+  ///   each once, and no live vertex has a free or shared disk;
+  /// - every live half-edge has a live face (or OUTSIDE) and a live target,
+  ///   and live `next` and `prev` that are each other's inverse, on the
+  ///   same face, with the target of a half-edge the source of its next;
+  /// - every live face's half-edge is on it, and its cycle holds every
+  ///   half-edge of the face (one cycle a face);
+  /// - every live vertex's half-edge ends at it, and turning around it
+  ///   (`twin(next(h))`) meets every half-edge that ends there (a vertex's
+  ///   neighbourhood is one fan).
+  /// If not, and `why` is given, it gets the first problem found, in one
+  /// line.  Linear in the size of the structure.  (A check for tests and
+  /// debugging: no operation calls it.)
+  bool is_valid(std::string* why = nullptr) const
+  {
+    auto fail = [why](const std::string& s) {
+      if(why) *why = s;
+      return false;
+    };
+    auto str = [](long i) { return std::to_string(i); };
+    const int H = int(halfedges_.size()), V = int(vertices_.size()), F = int(faces_.size()), D = int(disks_.size());
+    if(H % 2 != 0) return fail("an odd number of half-edges (" + str(H) + ")");
+    if(!zero_length_.empty() && zero_length_.size() != halfedges_.size() / 2)
+      return fail("the zero-length flags are " + str(long(zero_length_.size())) + " for " + str(H / 2) + " edges");
+    // the free lists: each element once, and exactly the deleted ones
+    std::vector<char> listed;
+    auto check_free = [&](const std::vector<int>& list, int size, const char* what, auto is_free) -> bool {
+      listed.assign(std::size_t(size), 0);
+      for(int i : list) {
+        if(i < 0 || i >= size) return fail(std::string("free ") + what + " " + str(i) + " out of range");
+        if(listed[std::size_t(i)]++) return fail(std::string("free ") + what + " " + str(i) + " listed twice");
+        if(!is_free(i)) return fail(std::string("free ") + what + " " + str(i) + " is in use");
+      }
+      return true;
+    };
+    if(!check_free(free_edges_, H, "edge", [&](int e) { return e % 2 == 0 && is_deleted(e) && is_deleted(e + 1); }))
+      return false;
+    for(int e = 0; e < H; e += 2) {
+      if(is_deleted(e) != is_deleted(e + 1)) return fail("edge " + str(e) + " is deleted on one side only");
+      if(is_deleted(e) && !listed[std::size_t(e)]) return fail("deleted edge " + str(e) + " is not free");
+    }
+    if(!check_free(free_vertices_, V, "vertex", [&](int v) { return !vertices_[v].alive; }))
+      return false;
+    for(int v = 0; v < V; ++v)
+      if(!vertices_[v].alive && !listed[std::size_t(v)]) return fail("deleted vertex " + str(v) + " is not free");
+    if(!check_free(free_faces_, F, "face", [&](int f) { return !faces_[f].alive; }))
+      return false;
+    for(int f = 0; f < F; ++f)
+      if(!faces_[f].alive && !listed[std::size_t(f)]) return fail("deleted face " + str(f) + " is not free");
+    if(!check_free(free_disks_, D, "disk", [](int) { return true; }))
+      return false;
+    for(int v = 0; v < V; ++v) {
+      const Vertex& x = vertices_[v];
+      if(!x.alive || x.is_corner()) continue;
+      if(x.slot >= D) return fail("vertex " + str(v) + " has disk " + str(x.slot) + " out of range");
+      if(listed[std::size_t(x.slot)]++) return fail("vertex " + str(v) + " has a free or shared disk " + str(x.slot));
+    }
+    // the half-edges
+    auto live = [&](int h) { return h >= 0 && h < H && !is_deleted(h); };
+    std::size_t in_faces = 0, live_halfedges = 0;
+    for(int h = 0; h < H; ++h) {
+      if(is_deleted(h)) continue;
+      ++live_halfedges;
+      const int f = face_of(h), v = target(h), n = next(h), p = prev(h);
+      if(f != OUTSIDE && (f < 0 || f >= F || !faces_[f].alive))
+        return fail("half-edge " + str(h) + " is on face " + str(f) + ", not a live one");
+      if(f != OUTSIDE) ++in_faces;
+      if(v < 0 || v >= V || !vertices_[v].alive) return fail("half-edge " + str(h) + " ends at no live vertex");
+      if(!live(n) || !live(p)) return fail("half-edge " + str(h) + " has no live next or prev");
+      if(prev(n) != h || next(p) != h) return fail("half-edge " + str(h) + ": next and prev are not inverse");
+      if(face_of(n) != f) return fail("half-edge " + str(h) + " and its next are on different faces");
+      if(source(n) != v) return fail("half-edge " + str(h) + " does not end where its next starts");
+    }
+    // the faces: one cycle each
+    std::size_t cycles = 0;
+    for(int f = 0; f < F; ++f) {
+      if(!faces_[f].alive) continue;
+      const int h0 = faces_[f].halfedge;
+      if(!live(h0) || face_of(h0) != f) return fail("face " + str(f) + " has no half-edge of its own");
+      int h = h0;
+      do {
+        ++cycles;
+        if(cycles > in_faces) return fail("the cycle of face " + str(f) + " does not close");
+        h = next(h);
+      } while(h != h0);
+    }
+    if(cycles != in_faces) return fail("a face has half-edges off its cycle");
+    // the vertices: one fan each
+    std::size_t fans = 0;
+    for(int v = 0; v < V; ++v) {
+      if(!vertices_[v].alive) continue;
+      const int h0 = vertices_[v].halfedge;
+      if(!live(h0) || target(h0) != v) return fail("vertex " + str(v) + " has no half-edge ending at it");
+      int h = h0;
+      do {
+        ++fans;
+        if(fans > live_halfedges) return fail("the half-edges around vertex " + str(v) + " do not close");
+        h = twin(next(h));
+      } while(h != h0);
+    }
+    if(fans != live_halfedges) return fail("a vertex has half-edges off its fan");
+    return true;
   }
 
   /// Empties the structure, keeping the memory of its arrays.
