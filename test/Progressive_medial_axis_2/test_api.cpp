@@ -433,7 +433,7 @@ void zero_length_flags()
 
 // The half-edge structure's check of itself (is_valid()): it accepts the
 // axis of a triangle, built as the engine builds it, and refuses each of
-// five corruptions of it.
+// seven corruptions of it.
 void structure_validity()
 {
   typedef CGAL::Progressive_medial_axes::internal::Halfedge_structure<Epick::Point_2, double> Hds;
@@ -486,6 +486,12 @@ void structure_validity()
   refused("a face whose half-edge is another's", [](Triangle& t) { t.hds.face(t.F[0]).halfedge = t.b[1]; });
   refused("a vertex whose half-edge ends elsewhere", [](Triangle& t) { t.hds.vertex(t.I).halfedge = t.b[0]; });
   refused("a deleted vertex still in use", [](Triangle& t) { t.hds.delete_vertex(t.I); });
+  refused("a deleted edge off the free list", [](Triangle& t) {
+    using CGAL::Progressive_medial_axes::internal::DELETED;
+    t.hds.he(t.b[0]).face = DELETED;
+    t.hds.he(t.b[0] ^ 1).face = DELETED;
+  });
+  CHECK(why.find("is not free") != std::string::npos, "structure check: the free lists are checked first: " << why);
   refused("a half-edge ending where its next does not start", [](Triangle& t) { t.hds.he(t.s[0]).vertex = t.V[1]; });
   // and the axes of every step of a progressive run
   CGAL::Progressive_medial_axis_2<> pma(pma_test::random_polygon_with_holes(5, 40, 4));

@@ -508,32 +508,28 @@ public:
     if(H % 2 != 0) return fail("an odd number of half-edges (" + str(H) + ")");
     if(!zero_length_.empty() && zero_length_.size() != halfedges_.size() / 2)
       return fail("the zero-length flags are " + str(long(zero_length_.size())) + " for " + str(H / 2) + " edges");
-    // the free lists: each element once, and exactly the deleted ones
+    // the free lists: each element once, and exactly the deleted ones (with
+    // `complete`, every element `is_free()` says is deleted must be listed;
+    // a disk is free when no live vertex has it, checked below)
+    for(int e = 0; e < H; e += 2)
+      if(is_deleted(e) != is_deleted(e + 1)) return fail("edge " + str(e) + " is deleted on one side only");
     std::vector<char> listed;
-    auto check_free = [&](const std::vector<int>& list, int size, const char* what, auto is_free) -> bool {
+    auto check_free = [&](const std::vector<int>& list, int size, const char* what, auto is_free,
+                          bool complete) -> bool {
       listed.assign(std::size_t(size), 0);
       for(int i : list) {
         if(i < 0 || i >= size) return fail(std::string("free ") + what + " " + str(i) + " out of range");
         if(listed[std::size_t(i)]++) return fail(std::string("free ") + what + " " + str(i) + " listed twice");
         if(!is_free(i)) return fail(std::string("free ") + what + " " + str(i) + " is in use");
       }
+      for(int i = 0; complete && i < size; ++i)
+        if(is_free(i) && !listed[std::size_t(i)]) return fail(std::string("deleted ") + what + " " + str(i) + " is not free");
       return true;
     };
-    if(!check_free(free_edges_, H, "edge", [&](int e) { return e % 2 == 0 && is_deleted(e) && is_deleted(e + 1); }))
-      return false;
-    for(int e = 0; e < H; e += 2) {
-      if(is_deleted(e) != is_deleted(e + 1)) return fail("edge " + str(e) + " is deleted on one side only");
-      if(is_deleted(e) && !listed[std::size_t(e)]) return fail("deleted edge " + str(e) + " is not free");
-    }
-    if(!check_free(free_vertices_, V, "vertex", [&](int v) { return !vertices_[v].alive; }))
-      return false;
-    for(int v = 0; v < V; ++v)
-      if(!vertices_[v].alive && !listed[std::size_t(v)]) return fail("deleted vertex " + str(v) + " is not free");
-    if(!check_free(free_faces_, F, "face", [&](int f) { return !faces_[f].alive; }))
-      return false;
-    for(int f = 0; f < F; ++f)
-      if(!faces_[f].alive && !listed[std::size_t(f)]) return fail("deleted face " + str(f) + " is not free");
-    if(!check_free(free_disks_, D, "disk", [](int) { return true; }))
+    if(!check_free(free_edges_, H, "edge", [&](int e) { return e % 2 == 0 && is_deleted(e); }, true) ||
+       !check_free(free_vertices_, V, "vertex", [&](int v) { return !vertices_[v].alive; }, true) ||
+       !check_free(free_faces_, F, "face", [&](int f) { return !faces_[f].alive; }, true) ||
+       !check_free(free_disks_, D, "disk", [](int) { return true; }, false))
       return false;
     for(int v = 0; v < V; ++v) {
       const Vertex& x = vertices_[v];
